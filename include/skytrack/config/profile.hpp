@@ -1,0 +1,208 @@
+#pragma once
+// The tracking profile: what a tracker reads from a YAML profile, as plain structs.
+// The member defaults are the shipped config/profiles/default.yaml (a test keeps them equal);
+// config/README.md documents every key with its range. SI units, angles in radians, the
+// local ENU tracking frame of DESIGN.md.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace skytrack::config {
+
+enum class TrackingMode { kPoint, kGroup, kExtended, kBernoulli };
+enum class MotionModelType {
+  kConstantVelocity,
+  kConstantAcceleration,
+  kCoordinatedTurn,           // fixed turn rate
+  kCoordinatedTurnEstimated,  // turn rate is a state
+  kSinger,
+};
+enum class MeasurementUpdate { kEkf, kUnscented };
+enum class AssociationMethod { kJpda, kGnn };
+
+struct ProfileIdentity {
+  std::string name;     // required; shown in logs, status and check-profile
+  std::string version;  // required; free text ("3", "2024-06a")
+  std::string description;
+  bool operator==(const ProfileIdentity&) const = default;
+};
+
+/// Standard deviations used when neither the scan nor the plot gives its own (CONTRACTS §1).
+struct MeasurementSigmas {
+  double range = 30.0;       // [m]
+  double azimuth = 0.003;    // [rad]
+  double elevation = 0.006;  // [rad]
+  double range_rate = 2.0;   // [m/s]
+  double x = 50.0;           // [m] Cartesian plots
+  double y = 50.0;           // [m]
+  double z = 100.0;          // [m]
+  bool operator==(const MeasurementSigmas&) const = default;
+};
+
+/// Sigma-point scaling of the unscented update (Wan & van der Merwe 2000).
+struct UnscentedSpec {
+  double alpha = 1.0;  // spread, in (0, 1]
+  double beta = 2.0;   // prior knowledge; 2 is optimal for Gaussians
+  double kappa = 0.0;  // >= 0 keeps every weight set valid whatever the state size
+  bool operator==(const UnscentedSpec&) const = default;
+};
+
+struct MeasurementSpec {
+  MeasurementUpdate update = MeasurementUpdate::kEkf;
+  UnscentedSpec unscented;  // used when update is kUnscented
+  MeasurementSigmas default_sigma;
+  bool operator==(const MeasurementSpec&) const = default;
+};
+
+/// One IMM mode. Only the parameters of `type` are read from the file; the others keep their
+/// defaults and mean nothing. In 3-D the vertical channel of every type is nearly constant
+/// velocity with `vertical_accel_sigma`.
+struct MotionModelSpec {
+  std::string name;  // unique; the mode's name in outputs ("modes") and in branching
+  MotionModelType type = MotionModelType::kConstantVelocity;
+  double accel_sigma = 1.0;  // [m/s^2] white acceleration (cv, ct, ct-estimated); Singer sigma_m
+  double jerk_sigma = 1.0;   // [m/s^3] white jerk (constant_acceleration)
+  double turn_rate = 0.0;    // [rad/s] coordinated_turn; positive = left (anticlockwise)
+  double turn_rate_sigma = 0.005;         // [rad/s^2] white turn acceleration (ct-estimated)
+  double initial_turn_rate_sigma = 0.05;  // [rad/s] turn-rate spread at start or mode entry
+  double time_constant = 20.0;            // [s] Singer manoeuvre time constant
+  double vertical_accel_sigma = 1.0;      // [m/s^2] z channel, 3-D only
+  bool operator==(const MotionModelSpec&) const = default;
+};
+
+struct AssociationSpec {
+  AssociationMethod method = AssociationMethod::kJpda;
+  double gate_probability = 0.99;      // P_G of the (non-manoeuvre) validation gate, in (0, 1)
+  double detection_probability = 0.9;  // P_D, in (0, 1]
+  // Clutter spatial density in the tracking frame [1/m^2 in 2-D, 1/m^3 in 3-D]; empty means
+  // "auto": estimated from each scan.
+  std::optional<double> clutter_density;
+  int max_exact_cluster_size = 8;  // [tracks] exact JPDA marginals up to this cluster size
+  int k_best = 100;                // joint events from Murty's k-best above it
+  bool operator==(const AssociationSpec&) const = default;
+};
+
+/// Mean-shift partitioning of the kept plots (paper 000 eq. 9-10).
+struct MeanShiftSpec {
+  double bandwidth = 500.0;       // [m] Gaussian kernel bandwidth
+  double merge_distance = 100.0;  // [m] converged points closer than this form one cell
+  int max_iterations = 50;        // per plot
+  double tolerance = 1.0;         // [m] a point has converged when it moves less than this
+  bool operator==(const MeanShiftSpec&) const = default;
+};
+
+/// Kernel-density clutter rejection, paper 000 §3.1: a plot whose density (eq. 6-7) is below
+/// tau = f_min + (beta / n_f) (f_max - f_min) (eq. 8) is clutter.
+struct ClutterRejectionSpec {
+  bool enabled = false;             // default.yaml says why it is off for point targets
+  double kernel_bandwidth = 500.0;  // h [m]
+  int beta = 1;                     // in [1, n_f); raise it in heavier clutter
+  int n_f = 10;                     // number of equal bins of [f_min, f_max]
+  MeanShiftSpec mean_shift;
+  bool operator==(const ClutterRejectionSpec&) const = default;
+};
+
+/// M-of-N plot-to-plot initiation with a speed gate.
+struct InitiationSpec {
+  int m = 2;                 // plots needed ...
+  int n = 3;                 // ... within this many consecutive scans
+  double min_speed = 10.0;   // [m/s] slower plot pairs are stationary clutter
+  double max_speed = 700.0;  // [m/s] faster plot pairs cannot be one target
+  bool operator==(const InitiationSpec&) const = default;
+};
+
+/// tentative -> confirmed -> coasting -> deleted.
+struct TrackLifeSpec {
+  int confirm_m = 3;                      // confirmed when M of the last N scans had a plot
+  int confirm_n = 4;                      // (counted from the track's first plot)
+  int delete_tentative_misses = 2;        // consecutive misses that delete a tentative track
+  int delete_confirmed_misses = 5;        // K consecutive misses that delete a confirmed track
+  double delete_position_sigma = 2000.0;  // [m] or when sqrt(max eig of P_pos) exceeds this
+  bool operator==(const TrackLifeSpec&) const = default;
+};
+
+/// Branch ("filiation") tracking, paper 003.
+struct BranchingSpec {
+  bool enabled = true;
+  int max_children = 3;  // sons per father, grandsons per son (paper: 3)
+  // The manoeuvre gate is the union of the gates of these models' predictions at this
+  // probability; the non-manoeuvre gate uses association.gate_probability.
+  double manoeuvre_gate_probability = 0.9999;
+  std::vector<std::string> manoeuvre_models = {"cv", "ct_left", "ct_right"};
+  int max_branches_per_father = 12;  // sons + grandsons of one father (3 + 9 at 3 children)
+  int max_total_branches = 2000;     // in the whole tracker: bounds time and memory
+  bool operator==(const BranchingSpec&) const = default;
+};
+
+struct TrackingProfile {
+  ProfileIdentity identity;
+  TrackingMode mode = TrackingMode::kPoint;
+  int dimension = 3;  // 2: state [x vx y vy]; 3: adds [z vz]
+  MeasurementSpec measurement;
+  std::vector<MotionModelSpec> motion_models = {
+      {.name = "cv", .type = MotionModelType::kConstantVelocity, .accel_sigma = 1.0},
+      {.name = "ct_left",
+       .type = MotionModelType::kCoordinatedTurn,
+       .accel_sigma = 3.0,
+       .turn_rate = 0.05236},  // 3 deg/s
+      {.name = "ct_right",
+       .type = MotionModelType::kCoordinatedTurn,
+       .accel_sigma = 3.0,
+       .turn_rate = -0.05236},
+  };
+  // Markov matrix per scan: row i gives P(mode j now | mode i before); rows sum to 1.
+  std::vector<std::vector<double>> mode_transition = {
+      {0.90, 0.05, 0.05},
+      {0.20, 0.78, 0.02},
+      {0.20, 0.02, 0.78},
+  };
+  std::vector<double> initial_mode_probabilities = {0.8, 0.1, 0.1};
+  AssociationSpec association;
+  ClutterRejectionSpec clutter_rejection;
+  InitiationSpec initiation;
+  TrackLifeSpec track_life;
+  BranchingSpec branching;
+  bool operator==(const TrackingProfile&) const = default;
+};
+
+// The names used in profile files.
+constexpr std::string_view to_string(TrackingMode mode) {
+  switch (mode) {
+    case TrackingMode::kPoint:
+      return "point";
+    case TrackingMode::kGroup:
+      return "group";
+    case TrackingMode::kExtended:
+      return "extended";
+    case TrackingMode::kBernoulli:
+      return "bernoulli";
+  }
+  return "?";
+}
+
+constexpr std::string_view to_string(MotionModelType type) {
+  switch (type) {
+    case MotionModelType::kConstantVelocity:
+      return "constant_velocity";
+    case MotionModelType::kConstantAcceleration:
+      return "constant_acceleration";
+    case MotionModelType::kCoordinatedTurn:
+      return "coordinated_turn";
+    case MotionModelType::kCoordinatedTurnEstimated:
+      return "coordinated_turn_estimated";
+    case MotionModelType::kSinger:
+      return "singer";
+  }
+  return "?";
+}
+
+constexpr std::string_view to_string(MeasurementUpdate update) {
+  return update == MeasurementUpdate::kEkf ? "ekf" : "unscented";
+}
+
+constexpr std::string_view to_string(AssociationMethod method) {
+  return method == AssociationMethod::kJpda ? "jpda" : "gnn";
+}
+
+}  // namespace skytrack::config

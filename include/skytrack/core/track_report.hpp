@@ -1,0 +1,72 @@
+#pragma once
+// Track output of one processed scan (CONTRACTS.md §3).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "skytrack/core/truth.hpp"
+
+namespace skytrack {
+
+enum class TrackStatus : std::uint8_t { kTentative, kConfirmed, kCoasting, kDeleted };
+
+std::string_view to_string(TrackStatus status);
+std::optional<TrackStatus> parse_track_status(std::string_view text);
+
+/// True for the statuses an evaluator scores (confirmed or coasting).
+inline bool is_reported_as_firm(TrackStatus status) {
+  return status == TrackStatus::kConfirmed || status == TrackStatus::kCoasting;
+}
+
+struct TrackReport {
+  std::int64_t id = 0;
+  TrackStatus status = TrackStatus::kTentative;
+  ObjectKind kind = ObjectKind::kPoint;
+  int dims = 2;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  /// Row-major over [x, vx, y, vy] (dims 2) or [x, vx, y, vy, z, vz] (dims 3); empty if unknown.
+  std::vector<double> covariance;
+  std::vector<std::pair<std::string, double>> modes;  // model name -> probability
+  std::optional<double> quality;
+  std::optional<Eigen::Matrix2d> extent;
+  std::optional<int> members;
+
+  bool operator==(const TrackReport&) const = default;
+};
+
+/// One association decision: plot -> track with its probability (JPDA beta, or 1).
+struct Association {
+  std::int64_t track = 0;
+  std::int64_t plot = 0;
+  double probability = 1.0;
+
+  bool operator==(const Association&) const = default;
+};
+
+/// A track-management decision (initiated, confirmed, branch_created, ...).
+struct TrackEvent {
+  std::string type;
+  std::int64_t track = 0;
+  std::string detail;
+
+  bool operator==(const TrackEvent&) const = default;
+};
+
+struct TrackFrame {
+  std::uint32_t sensor = 0;
+  std::uint64_t scan = 0;
+  double time = 0.0;
+  std::vector<TrackReport> tracks;
+  std::vector<Association> associations;
+  std::vector<TrackEvent> events;
+
+  bool operator==(const TrackFrame&) const = default;
+};
+
+}  // namespace skytrack

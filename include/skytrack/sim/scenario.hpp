@@ -1,0 +1,108 @@
+#pragma once
+// A simulated scenario: targets on piecewise manoeuvres, a (possibly airborne) sensor
+// platform, a polar or Cartesian sensor and Poisson clutter. Plain data; the YAML schema is in
+// config/README.md ("Scenario files") and the loader in config/scenario_loader.hpp.
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "skytrack/core/plot.hpp"
+#include "skytrack/core/truth.hpp"
+
+namespace skytrack::sim {
+
+/// One manoeuvre of a trajectory. Turns are horizontal; the vertical velocity is kept.
+struct SegmentSpec {
+  enum class Type : std::uint8_t { kConstantVelocity, kCoordinatedTurn, kConstantAcceleration };
+  Type type = Type::kConstantVelocity;
+  double duration = 0.0;  // [s]
+  /// Coordinated turn: signed rate [rad/s], positive = left (anticlockwise from above), or a
+  /// load factor [g] turned into a rate with the speed at the start of the segment.
+  std::optional<double> turn_rate;
+  std::optional<double> g_load;
+  bool turn_left = true;                                   // with g_load
+  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();  // [m/s^2] constant acceleration
+};
+
+/// Initial state and manoeuvres; after the last segment the motion is constant velocity.
+struct TrajectorySpec {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // [m]
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // [m/s]
+  std::vector<SegmentSpec> segments;
+};
+
+struct TargetSpec {
+  std::int64_t id = 0;
+  ObjectKind kind = ObjectKind::kPoint;
+  double birth = 0.0;                                        // [s]
+  double death = std::numeric_limits<double>::infinity();    // [s]
+  TrajectorySpec trajectory;
+  /// Born at the parent's position (plus offset) at `birth`: a split or a spawned target.
+  std::optional<std::int64_t> parent;
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  std::optional<double> detection_probability;  // overrides the sensor's
+  // Groups: `members` targets at fixed offsets drawn uniformly in the `shape` ellipse.
+  // Extended objects: plots scattered uniformly over the `shape` ellipse.
+  int members = 0;
+  Eigen::Matrix2d shape = Eigen::Matrix2d::Identity();  // [m^2] SPD shape matrix X
+  enum class PlotModel : std::uint8_t { kMembers, kPoisson };
+  PlotModel plot_model = PlotModel::kMembers;  // groups: each member detected, or Poisson
+  double plot_rate = 0.0;  // Poisson mean of plots per scan (extended, or group kPoisson)
+  bool shape_follows_heading = false;  // rotate the shape with the velocity heading
+};
+
+struct PlatformSpec {
+  TrajectorySpec trajectory;
+  Eigen::Vector3d attitude = Eigen::Vector3d::Zero();  // [rad] heading, pitch, roll
+  /// Heading and pitch from the velocity, roll from the turn rate (coordinated bank angle).
+  bool attitude_follows_velocity = false;
+};
+
+struct SensorSpec {
+  std::uint32_t id = 0;
+  enum class Type : std::uint8_t { kPolar, kCartesian };
+  Type type = Type::kPolar;
+  double scan_period = 1.0;  // [s]
+  enum class Antenna : std::uint8_t { kSnapshot, kRotating };
+  Antenna antenna = Antenna::kSnapshot;
+  int sectors = 1;  // rotating antenna: batches per revolution
+  double detection_probability = 1.0;
+  double min_range = 0.0;                                       // [m]
+  double max_range = std::numeric_limits<double>::infinity();  // [m]
+  bool range_rate = false;  // polar sensors: report range-rate
+  MeasurementSigma sigma;   // noise standard deviations (or ellipsoid semi-axes if bounded)
+  enum class Noise : std::uint8_t { kGaussian, kBounded };
+  Noise noise = Noise::kGaussian;
+  bool write_sigma = true;  // put `sigma` in each scan line
+};
+
+struct ClutterSpec {
+  double mean = 0.0;  // Poisson mean of clutter plots per revolution / snapshot
+  enum class Region : std::uint8_t { kPolar, kBox };
+  Region region = Region::kPolar;
+  // Polar region in the platform body frame [min, max]: range [m], azimuth, elevation [rad].
+  Eigen::Vector2d range{0.0, 0.0};
+  Eigen::Vector2d azimuth{-3.141592653589793, 3.141592653589793};
+  Eigen::Vector2d elevation{0.0, 0.0};
+  // Box region in the tracking frame [min, max] per axis [m].
+  Eigen::Vector2d x{0.0, 0.0}, y{0.0, 0.0}, z{0.0, 0.0};
+};
+
+struct Scenario {
+  std::string name;
+  std::string description;
+  int dimensions = 2;
+  double start_time = 0.0;  // [s]
+  double duration = 0.0;    // [s]
+  std::uint64_t seed = 1;
+  PlatformSpec platform;
+  SensorSpec sensor;
+  ClutterSpec clutter;
+  std::vector<TargetSpec> targets;
+};
+
+}  // namespace skytrack::sim

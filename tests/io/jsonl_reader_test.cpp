@@ -1,0 +1,60 @@
+#include <filesystem>
+#include <fstream>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "skytrack/io/jsonl_reader.hpp"
+
+namespace skytrack::io {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string write_temp(const std::string& name, const std::string& content) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  std::ofstream(path) << content;
+  return path.string();
+}
+
+TEST(JsonLinesReader, ReportsBadLinesWithNumbersAndKeepsReading) {
+  // GIVEN a stream whose 2nd and 4th lines are broken, a blank line and a bad plot
+  const std::string path = write_temp("skytrack_reader_test.plots.jsonl",
+                                      "{\"sensor\":0,\"scan\":0,\"time\":0,\"plots\":[]}\n"
+                                      "{\"sensor\":0,\"scan\":1,\n"
+                                      "\n"
+                                      "not json at all\r\n"
+                                      "{\"sensor\":0,\"scan\":2,\"time\":2,\"plots\":["
+                                      "{\"id\":0,\"x\":1,\"y\":2},{\"id\":1,\"range\":-1,\"azimuth\":0}]}\n");
+  std::vector<LineError> errors;
+  auto reader = PlotStreamReader::open(path, [&](const LineError& e) { errors.push_back(e); });
+  ASSERT_TRUE(reader);
+
+  // WHEN it is read to the end
+  std::vector<PlotScan> scans;
+  while (auto scan = reader->next()) scans.push_back(std::move(*scan));
+
+  // THEN the good lines are kept and every problem names its file and line
+  ASSERT_EQ(scans.size(), 2u);
+  EXPECT_EQ(scans[1].scan, 2u);
+  EXPECT_EQ(scans[1].plots.size(), 1u);
+  ASSERT_EQ(errors.size(), 3u);
+  EXPECT_EQ(errors[0].line, 2u);
+  EXPECT_EQ(errors[1].line, 4u);
+  EXPECT_EQ(errors[2].line, 5u);
+  EXPECT_THAT(to_string(errors[2]), HasSubstr("skytrack_reader_test.plots.jsonl:5: plot rejected"));
+  EXPECT_EQ(reader->counts().records, 2u);
+  EXPECT_EQ(reader->counts().rejected_lines, 2u);
+  EXPECT_EQ(reader->counts().rejected_plots, 1u);
+  EXPECT_EQ(reader->bytes_read(), reader->file_size());
+  std::filesystem::remove(path);
+}
+
+TEST(JsonLinesReader, FailsToOpenAMissingFileWithItsName) {
+  const auto reader = TruthReader::open("/nonexistent/truth.jsonl");
+  ASSERT_FALSE(reader);
+  EXPECT_THAT(reader.error().message, HasSubstr("/nonexistent/truth.jsonl"));
+}
+
+}  // namespace
+}  // namespace skytrack::io

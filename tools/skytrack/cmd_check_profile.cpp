@@ -1,0 +1,44 @@
+// skytrack check-profile FILE...: validates tracking profiles. A valid file gets a one-line
+// summary on stdout; an invalid one gets every error on stderr, and the exit code is 1.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "commands.hpp"
+#include "skytrack/config/profile_loader.hpp"
+
+namespace skytrack::tool {
+namespace {
+
+std::string summary(const std::string& path, const config::TrackingProfile& profile) {
+  std::string models;
+  for (const auto& model : profile.motion_models) {
+    models += (models.empty() ? "" : ", ") + model.name;
+  }
+  return fmt::format("{}: ok: {} version {}, mode {}, {}-D, models {}", path, profile.identity.name,
+                     profile.identity.version, config::to_string(profile.mode), profile.dimension,
+                     models);
+}
+
+}  // namespace
+
+void add_check_profile_command(CLI::App& app, int& exit_code) {
+  auto files = std::make_shared<std::vector<std::string>>();
+  CLI::App* cmd = app.add_subcommand("check-profile", "Validate YAML tracking profiles");
+  cmd->add_option("files", *files, "Profile files (YAML)")->required();
+  cmd->callback([files, &exit_code] {
+    for (const auto& path : *files) {
+      const auto profile = config::load_profile(path);
+      if (profile) {
+        fmt::print("{}\n", summary(path, *profile));
+      } else {
+        fmt::print(stderr, "{}\n", profile.error().message);
+        exit_code = 1;
+      }
+    }
+  });
+}
+
+}  // namespace skytrack::tool

@@ -1,0 +1,448 @@
+// `skytrack eval`: scores a track file against a truth file (CONTRACTS.md §2, §3) with
+// OSPA / GOSPA, RMSE, track continuity and GWD (metrics/scenario_evaluation.hpp). Both
+// files are streamed in time order; track frames are matched to truth frames by time.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "skytrack/io/jsonl_reader.hpp"
+#include "skytrack/io/svg_plot.hpp"
+#include "skytrack/metrics/scenario_evaluation.hpp"
+
+namespace skytrack::tool {
+namespace {
+
+constexpr double kTimeTolerance = 1e-6;       // [s] a track frame belongs to a truth time
+constexpr std::size_t kMaxErrorsShown = 20;   // per file, then only counted
+constexpr std::size_t kMaxPlotPoints = 4000;  // per series, by adaptive decimation
+
+struct EvalOptions {
+  std::string truth_path, tracks_path, plot_path, per_scan_path;
+  double cutoff = metrics::ScenarioEvaluationConfig{}.cutoff;
+  double order = metrics::ScenarioEvaluationConfig{}.order;
+  bool json = false;
+};
+
+/// Error sink that prints the first few rejected lines of a file and counts the rest.
+io::ErrorSink printing_sink(std::size_t& shown) {
+  return [&shown](const io::LineError& error) {
+    if (shown < kMaxErrorsShown) {
+      fmt::print(stderr, "{}\n", io::to_string(error));
+    } else if (shown == kMaxErrorsShown) {
+      fmt::print(stderr, "{}: further rejected lines are counted, not shown\n", error.file);
+    }
+    ++shown;
+  };
+}
+
+/// Keeps every stride-th point; halves the kept points and doubles the stride when full, so
+/// a long run keeps an even spread of at most kMaxPlotPoints.
+template <class Point>
+struct Decimated {
+  std::vector<Point> points;
+  std::size_t seen = 0, stride = 1;
+  void add(const Point& p) {
+    if (seen++ % stride != 0) return;
+    if (points.size() == kMaxPlotPoints) {
+      for (std::size_t i = 0; i < points.size() / 2; ++i) points[i] = points[2 * i];
+      points.resize(points.size() / 2);
+      stride *= 2;
+      if ((seen - 1) % stride != 0) return;
+    }
+    points.push_back(p);
+  }
+};
+
+struct XY {
+  double x, y;
+};
+struct GospaPoint {
+  double time, gospa, localisation, missed, false_tracks;
+};
+
+struct PlotCollector {
+  std::map<std::int64_t, Decimated<XY>> truths, tracks;
+  Decimated<GospaPoint> gospa;
+
+  void add(const TruthFrame& truth, const TrackFrame* tracks_now,
+           const metrics::ScanRecord& record) {
+    for (const TruthObject& o : truth.objects) truths[o.id].add({o.position.x(), o.position.y()});
+    if (tracks_now != nullptr) {
+      for (const TrackReport& t : tracks_now->tracks) {
+        if (is_reported_as_firm(t.status)) tracks[t.id].add({t.position.x(), t.position.y()});
+      }
+    }
+    gospa.add({record.time, record.gospa, record.gospa_localisation,
+               static_cast<double>(record.gospa_missed), static_cast<double>(record.gospa_false)});
+  }
+
+  static std::vector<io::PlotSeries> series(const std::map<std::int64_t, Decimated<XY>>& in) {
+    std::vector<io::PlotSeries> out;
+    for (const auto& [id, d] : in) {
+      io::PlotSeries s{id, {}, {}};
+      for (const XY& p : d.points) {
+        s.x.push_back(p.x);
+        s.y.push_back(p.y);
+      }
+      out.push_back(std::move(s));
+    }
+    return out;
+  }
+
+  io::EvaluationPlot build(const EvalOptions& options, std::string subtitle) const {
+    io::EvaluationPlot plot;
+    const auto file_name = [](const std::string& path) {
+      return path.substr(path.find_last_of('/') + 1);  // npos + 1 == 0
+    };
+    plot.title = fmt::format("skytrack eval: {} against {}", file_name(options.tracks_path),
+                             file_name(options.truth_path));
+    plot.subtitle = std::move(subtitle);
+    plot.truths = series(truths);
+    plot.tracks = series(tracks);
+    plot.cutoff = options.cutoff;
+    plot.order = options.order;
+    for (const GospaPoint& p : gospa.points) {
+      plot.gospa.time.push_back(p.time);
+      plot.gospa.gospa.push_back(p.gospa);
+      plot.gospa.localisation.push_back(p.localisation);
+      plot.gospa.missed.push_back(p.missed);
+      plot.gospa.false_tracks.push_back(p.false_tracks);
+    }
+    return plot;
+  }
+};
+
+/// A JSON number, or null for NaN / inf (JSON has neither). fmt's {} is the shortest
+/// representation that reads back bit-identical.
+std::string json_number(double v) {
+  return std::isfinite(v) ? fmt::format("{}", v) : "null";
+}
+
+/// Writes the per-scan records: JSON Lines for a .jsonl file, CSV otherwise.
+class PerScanWriter {
+ public:
+  bool open(const std::string& path) {
+    if (path.empty()) return true;
+    file_ = std::fopen(path.c_str(), "w");
+    if (file_ == nullptr) return false;
+    jsonl_ = path.size() >= 6 && path.compare(path.size() - 6, 6, ".jsonl") == 0;
+    if (!jsonl_) {
+      fmt::print(file_,
+                 "time,ospa,gospa,gospa_localisation,gospa_missed,gospa_false,truths,"
+                 "tracks\n");
+    }
+    return true;
+  }
+  void write(const metrics::ScanRecord& r) {
+    if (file_ == nullptr) return;
+    if (jsonl_) {
+      fmt::print(file_,
+                 "{{\"time\": {}, \"ospa\": {}, \"gospa\": {}, \"gospa_localisation\": {}, "
+                 "\"gospa_missed\": {}, \"gospa_false\": {}, \"truths\": {}, \"tracks\": {}}}\n",
+                 json_number(r.time), json_number(r.ospa), json_number(r.gospa),
+                 json_number(r.gospa_localisation), r.gospa_missed, r.gospa_false, r.truths,
+                 r.tracks);
+    } else {
+      fmt::print(file_, "{},{},{},{},{},{},{},{}\n", r.time, r.ospa, r.gospa, r.gospa_localisation,
+                 r.gospa_missed, r.gospa_false, r.truths, r.tracks);
+    }
+  }
+  /// Closes the file; false if any write failed.
+  bool close() {
+    if (file_ == nullptr) return true;
+    const bool ok = std::ferror(file_) == 0;
+    const bool closed = std::fclose(file_) == 0;
+    file_ = nullptr;
+    return ok && closed;
+  }
+  ~PerScanWriter() { close(); }
+
+ private:
+  std::FILE* file_ = nullptr;
+  bool jsonl_ = false;
+};
+
+struct RunCounts {
+  std::size_t truth_rejected = 0, track_rejected = 0;
+  std::size_t track_frames = 0, track_frames_without_truth = 0;
+  std::optional<double> first_orphan_time;
+};
+
+/// Merges the track frames at each truth time. Track frames arrive in time order (several
+/// sensors may share a time): those before the truth time have no truth and are counted,
+/// those at it are merged, the first later one is kept pending.
+class TrackFrameMatcher {
+ public:
+  using Source = std::function<std::optional<TrackFrame>()>;
+  TrackFrameMatcher(Source source, RunCounts& counts) : source_(std::move(source)), counts_(counts) {
+    advance();
+  }
+
+  /// The merged tracks at `time`, or null when no track frame has that time. A repeated
+  /// truth time gets the tracks already merged for it.
+  const TrackFrame* at(double time) {
+    if (merged_time_ && std::abs(*merged_time_ - time) <= kTimeTolerance) {
+      return merged_any_ ? &merged_ : nullptr;
+    }
+    merged_.tracks.clear();
+    merged_.time = time;
+    merged_time_ = time;
+    merged_any_ = false;
+    while (pending_ && pending_->time < time - kTimeTolerance) orphan();
+    while (pending_ && std::abs(pending_->time - time) <= kTimeTolerance) {
+      merged_.tracks.insert(merged_.tracks.end(), pending_->tracks.begin(), pending_->tracks.end());
+      merged_any_ = true;
+      advance();
+    }
+    return merged_any_ ? &merged_ : nullptr;
+  }
+
+  /// Counts the track frames after the last truth time.
+  void finish() {
+    while (pending_) orphan();
+  }
+
+ private:
+  void advance() {
+    pending_ = source_();
+    if (pending_) ++counts_.track_frames;
+  }
+  void orphan() {
+    ++counts_.track_frames_without_truth;
+    if (!counts_.first_orphan_time) counts_.first_orphan_time = pending_->time;
+    advance();
+  }
+
+  Source source_;
+  RunCounts& counts_;
+  std::optional<TrackFrame> pending_;
+  TrackFrame merged_;
+  std::optional<double> merged_time_;
+  bool merged_any_ = false;
+};
+
+std::string summary_json(const metrics::EvaluationSummary& s, const EvalOptions& o,
+                         const RunCounts& c) {
+  std::string json = fmt::format(
+      "{{\"gospa_mean\": {}, \"ospa_mean\": {}, \"gospa_localisation_mean\": {}, "
+      "\"gospa_missed_mean\": {}, \"gospa_false_mean\": {}, \"rmse_position\": {}, "
+      "\"rmse_velocity\": {}, \"matched_pairs\": {}, \"id_changes\": {}, "
+      "\"fragmentations\": {}, \"gwd_mean\": {}, \"gwd_pairs\": {}, \"scans\": {}, "
+      "\"cutoff\": {}, \"order\": {}, \"truth_lines_rejected\": {}, "
+      "\"track_lines_rejected\": {}, \"track_frames\": {}, \"track_frames_without_truth\": {}, "
+      "\"continuity\": [",
+      json_number(s.gospa_mean), json_number(s.ospa_mean), json_number(s.gospa_localisation_mean),
+      json_number(s.gospa_missed_mean), json_number(s.gospa_false_mean),
+      json_number(s.rmse_position), json_number(s.rmse_velocity), s.matched_pairs, s.id_changes,
+      s.fragmentations, json_number(s.gwd_mean), s.gwd_pairs, s.scans, json_number(o.cutoff),
+      json_number(o.order), c.truth_rejected, c.track_rejected, c.track_frames,
+      c.track_frames_without_truth);
+  for (std::size_t i = 0; i < s.continuity.size(); ++i) {
+    const metrics::TruthContinuity& t = s.continuity[i];
+    json += fmt::format(
+        "{}{{\"truth\": {}, \"frames_present\": {}, \"frames_tracked\": {}, "
+        "\"id_changes\": {}, \"fragmentations\": {}, \"distinct_tracks\": {}}}",
+        i == 0 ? "" : ", ", t.truth_id, t.frames_present, t.frames_tracked, t.id_changes,
+        t.fragmentations, t.distinct_tracks);
+  }
+  return json + "]}";
+}
+
+void print_table(const metrics::EvaluationSummary& s, const EvalOptions& o, const RunCounts& c) {
+  const auto num = [](double v, std::string_view unit) {
+    return std::isfinite(v) ? fmt::format("{:.3f} {}", v, unit) : std::string("n/a");
+  };
+  fmt::print("skytrack eval: {} scans, cutoff c = {} m, order p = {}\n", s.scans, o.cutoff,
+             o.order);
+  fmt::print("  {:<26}{}\n", "GOSPA mean", num(s.gospa_mean, "m"));
+  fmt::print("  {:<26}{}\n", "  localisation mean",
+             num(s.gospa_localisation_mean, fmt::format("m^{}", o.order)));
+  fmt::print("  {:<26}{:.3f} per scan\n", "  missed truths mean", s.gospa_missed_mean);
+  fmt::print("  {:<26}{:.3f} per scan\n", "  false tracks mean", s.gospa_false_mean);
+  fmt::print("  {:<26}{}\n", "OSPA mean", num(s.ospa_mean, "m"));
+  fmt::print("  {:<26}{} over {} matched pairs\n", "RMSE position", num(s.rmse_position, "m"),
+             s.matched_pairs);
+  fmt::print("  {:<26}{}\n", "RMSE velocity", num(s.rmse_velocity, "m/s"));
+  fmt::print("  {:<26}{} over {} pairs with extents\n", "GWD mean", num(s.gwd_mean, "m"),
+             s.gwd_pairs);
+  fmt::print("  {:<26}{}\n", "id changes", s.id_changes);
+  fmt::print("  {:<26}{}\n", "fragmentations", s.fragmentations);
+  fmt::print("  {:<26}truth {}, tracks {}\n", "rejected lines", c.truth_rejected, c.track_rejected);
+  if (s.continuity.empty() || s.continuity.size() > 50) return;
+  fmt::print("\n  {:>8} {:>9} {:>9} {:>11} {:>15} {:>7}\n", "truth", "present", "tracked",
+             "id changes", "fragmentations", "tracks");
+  for (const metrics::TruthContinuity& t : s.continuity) {
+    fmt::print("  {:>8} {:>9} {:>9} {:>11} {:>15} {:>7}\n", t.truth_id, t.frames_present,
+               t.frames_tracked, t.id_changes, t.fragmentations, t.distinct_tracks);
+  }
+}
+
+bool write_text_file(const std::string& path, const std::string& text) {
+  std::FILE* file = std::fopen(path.c_str(), "w");
+  if (file == nullptr) return false;
+  const bool ok = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+  return std::fclose(file) == 0 && ok;
+}
+
+/// Prints the summary and writes the plot; false if the plot cannot be written.
+bool report(const metrics::EvaluationSummary& summary, const EvalOptions& options,
+            const RunCounts& counts, const std::optional<PlotCollector>& plot) {
+  if (options.json) {
+    fmt::print("{}\n", summary_json(summary, options, counts));
+  } else {
+    print_table(summary, options, counts);
+  }
+  if (!plot) return true;
+  const auto num = [](double v) {
+    return std::isfinite(v) ? fmt::format("{:.1f} m", v) : std::string("n/a");
+  };
+  const std::string subtitle = fmt::format(
+      "{} scans | GOSPA mean {} | OSPA mean {} | RMSE position {} | id changes {} | "
+      "fragmentations {}",
+      summary.scans, num(summary.gospa_mean), num(summary.ospa_mean), num(summary.rmse_position),
+      summary.id_changes, summary.fragmentations);
+  if (!write_text_file(options.plot_path,
+                       io::render_evaluation_svg(plot->build(options, subtitle)))) {
+    fmt::print(stderr, "skytrack eval: cannot write {}\n", options.plot_path);
+    return false;
+  }
+  return true;
+}
+
+/// A truth file given as tracks: each object becomes a confirmed track with the object's id,
+/// so `eval --truth T --tracks T` checks the chain and scores 0.
+TrackFrame tracks_from_truth(const TruthFrame& truth) {
+  TrackFrame frame;
+  frame.time = truth.time;
+  for (const TruthObject& object : truth.objects) {
+    TrackReport track;
+    track.id = object.id;
+    track.status = TrackStatus::kConfirmed;
+    track.kind = object.kind;
+    track.dims = object.dims;
+    track.position = object.position;
+    track.velocity = object.velocity;
+    track.extent = object.extent;
+    track.members = object.members;
+    frame.tracks.push_back(std::move(track));
+  }
+  return frame;
+}
+
+/// True when the file's first non-blank line is a truth frame rather than a track frame.
+bool holds_truth(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    return !io::parse_track_frame(line) && io::parse_truth_frame(line).has_value();
+  }
+  return false;
+}
+
+int run_eval(const EvalOptions& options) {
+  RunCounts counts;
+  std::size_t truth_shown = 0, track_shown = 0;
+  auto truth_reader = io::TruthReader::open(options.truth_path, printing_sink(truth_shown));
+  if (!truth_reader) {
+    fmt::print(stderr, "skytrack eval: {}\n", truth_reader.error().message);
+    return 2;
+  }
+  // --tracks may name a track file or, to check the evaluation chain, a truth file.
+  std::optional<io::TrackReader> track_reader;
+  std::optional<io::TruthReader> truth_as_tracks;
+  TrackFrameMatcher::Source source;
+  if (holds_truth(options.tracks_path)) {
+    auto reader = io::TruthReader::open(options.tracks_path, printing_sink(track_shown));
+    if (!reader) {
+      fmt::print(stderr, "skytrack eval: {}\n", reader.error().message);
+      return 2;
+    }
+    truth_as_tracks.emplace(std::move(*reader));
+    source = [&]() -> std::optional<TrackFrame> {
+      auto truth = truth_as_tracks->next();
+      if (!truth) return std::nullopt;
+      return tracks_from_truth(*truth);
+    };
+  } else {
+    auto reader = io::TrackReader::open(options.tracks_path, printing_sink(track_shown));
+    if (!reader) {
+      fmt::print(stderr, "skytrack eval: {}\n", reader.error().message);
+      return 2;
+    }
+    track_reader.emplace(std::move(*reader));
+    source = [&] { return track_reader->next(); };
+  }
+  PerScanWriter per_scan;
+  if (!per_scan.open(options.per_scan_path)) {
+    fmt::print(stderr, "skytrack eval: cannot write {}\n", options.per_scan_path);
+    return 2;
+  }
+
+  metrics::ScenarioEvaluation evaluation({options.cutoff, options.order});
+  std::optional<PlotCollector> plot;
+  if (!options.plot_path.empty()) plot.emplace();
+
+  TrackFrameMatcher matcher(source, counts);
+  while (std::optional<TruthFrame> truth = truth_reader->next()) {
+    const TrackFrame* tracks = matcher.at(truth->time);
+    const metrics::ScanRecord& record = evaluation.add(*truth, tracks);
+    per_scan.write(record);
+    if (plot) plot->add(*truth, tracks, record);
+  }
+  matcher.finish();
+
+  counts.truth_rejected = truth_reader->counts().rejected_lines;
+  counts.track_rejected = track_reader ? track_reader->counts().rejected_lines
+                                       : truth_as_tracks->counts().rejected_lines;
+  if (counts.track_frames_without_truth > 0) {
+    fmt::print(stderr,
+               "skytrack eval: {} of {} track frames have no truth frame at their time (first "
+               "at t = {} s); they are not scored\n",
+               counts.track_frames_without_truth, counts.track_frames, *counts.first_orphan_time);
+  }
+  int exit_code = 0;
+  if (!per_scan.close()) {
+    fmt::print(stderr, "skytrack eval: writing {} failed\n", options.per_scan_path);
+    exit_code = 2;
+  }
+
+  if (!report(evaluation.summary(), options, counts, plot)) exit_code = 2;
+  return exit_code;
+}
+
+}  // namespace
+
+void add_eval_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<EvalOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "eval", "Score tracks against ground truth: OSPA/GOSPA, RMSE, track continuity, GWD");
+  cmd->add_option("--truth", options->truth_path, "Ground-truth JSON Lines file")->required();
+  cmd->add_option("--tracks", options->tracks_path, "Track-output JSON Lines file")->required();
+  cmd->add_option("--cutoff", options->cutoff, "OSPA/GOSPA cut-off c [m]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--order", options->order, "OSPA/GOSPA order p (1 to 20)")
+      ->check(CLI::Range(1.0, 20.0))
+      ->capture_default_str();
+  cmd->add_flag("--json", options->json, "Print one JSON object instead of a table");
+  cmd->add_option("--plot", options->plot_path, "Write an SVG picture of the run");
+  cmd->add_option("--per-scan", options->per_scan_path,
+                  "Write per-scan metrics (JSON Lines if it ends in .jsonl, else CSV)");
+  cmd->callback([options, &exit_code] { exit_code = run_eval(*options); });
+}
+
+}  // namespace skytrack::tool

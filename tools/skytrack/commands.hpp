@@ -1,0 +1,12 @@
+#pragma once
+// Subcommands of the `skytrack` tool. Each registers itself on the CLI11 app; the callback
+// stores its exit code in `exit_code`.
+#include <CLI/CLI.hpp>
+
+namespace skytrack::tool {
+
+void add_simulate_command(CLI::App& app, int& exit_code);
+void add_eval_command(CLI::App& app, int& exit_code);
+void add_check_profile_command(CLI::App& app, int& exit_code);
+
+}  // namespace skytrack::tool

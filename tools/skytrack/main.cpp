@@ -1,0 +1,15 @@
+// skytrack: the command-line tool (simulate, eval; track, replay and record later).
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"skytrack - radar track processing: simulate, track and evaluate"};
+  app.require_subcommand(1);
+  int exit_code = 0;
+  skytrack::tool::add_simulate_command(app, exit_code);
+  skytrack::tool::add_eval_command(app, exit_code);
+  skytrack::tool::add_check_profile_command(app, exit_code);
+  CLI11_PARSE(app, argc, argv);
+  return exit_code;
+}
