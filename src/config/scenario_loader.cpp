@@ -103,21 +103,35 @@ TargetSpec read_target(YamlSection s, const Scenario& scenario) {
   s.integer("parent", parent, Range::non_negative());
   if (parent >= 0) target.parent = parent;
   read_vector(s, "offset", target.offset, scenario.dimensions);
+  if (!target.parent && s.has("offset")) s.error("offset", "an offset needs a parent");
+  target.velocity_from_parent = target.parent && !s.has("velocity");
   target.trajectory = read_trajectory(s, scenario.dimensions, !target.parent);
   if (target.parent && s.has("position")) {
     s.error("position", "a target with a parent starts at the parent's position; use offset");
   }
   s.number("detection_probability", target.detection_probability, Range::probability());
+  for (auto& w : s.sections("detection_windows")) {
+    sim::DetectionWindow window;
+    w.number("from", window.from, {}, true);
+    w.number("to", window.to, {}, true);
+    w.number("probability", window.probability, Range::probability(), true);
+    if (!(window.to > window.from)) w.error("to", "must be after from");
+    w.finish();
+    target.detection_windows.push_back(window);
+  }
+  s.boolean("truth", target.in_truth);
   if (target.kind != ObjectKind::kPoint) {
     target.shape = read_shape(s, "shape");
     s.boolean("shape_follows_heading", target.shape_follows_heading);
   }
   if (target.kind == ObjectKind::kGroup) {
-    s.integer("members", target.members, Range{1.0}, true);
     std::string plots = "members";
     s.choice("plots", plots, {"members", "poisson"});
-    target.plot_model = plots == "members" ? TargetSpec::PlotModel::kMembers
-                                           : TargetSpec::PlotModel::kPoisson;
+    target.plot_model =
+        plots == "members" ? TargetSpec::PlotModel::kMembers : TargetSpec::PlotModel::kPoisson;
+    // With Poisson plots the member count is only reported in the truth.
+    s.integer("members", target.members, Range{1.0},
+              target.plot_model == TargetSpec::PlotModel::kMembers);
     s.number("plot_rate", target.plot_rate, Range::non_negative(),
              target.plot_model == TargetSpec::PlotModel::kPoisson);
   } else if (target.kind == ObjectKind::kExtended) {
@@ -149,8 +163,8 @@ SensorSpec read_sensor(YamlSection s) {
   s.number("scan_period", sensor.scan_period, Range::positive(), true);
   std::string antenna = "snapshot";
   s.choice("antenna", antenna, {"snapshot", "rotating"});
-  sensor.antenna = antenna == "snapshot" ? SensorSpec::Antenna::kSnapshot
-                                         : SensorSpec::Antenna::kRotating;
+  sensor.antenna =
+      antenna == "snapshot" ? SensorSpec::Antenna::kSnapshot : SensorSpec::Antenna::kRotating;
   s.integer("sectors", sensor.sectors, Range{1.0, 360.0});
   if (sensor.sectors > 1 && sensor.antenna != SensorSpec::Antenna::kRotating) {
     s.error("sectors", "sector batches need antenna: rotating");
@@ -158,6 +172,7 @@ SensorSpec read_sensor(YamlSection s) {
   s.number("detection_probability", sensor.detection_probability, Range::probability());
   s.number("min_range", sensor.min_range, Range::non_negative());
   s.number("max_range", sensor.max_range, Range::positive());
+  if (!(sensor.max_range > sensor.min_range)) s.error("max_range", "must exceed min_range");
   s.boolean("range_rate", sensor.range_rate);
   read_sigma(s.section("sigma", true), sensor.sigma);
   std::string noise = "gaussian";
@@ -168,7 +183,7 @@ SensorSpec read_sensor(YamlSection s) {
   return sensor;
 }
 
-ClutterSpec read_clutter(YamlSection s, const SensorSpec& sensor) {
+ClutterSpec read_clutter(YamlSection s, const SensorSpec& sensor, int dimensions) {
   ClutterSpec clutter;
   s.number("mean", clutter.mean, Range::non_negative());
   std::string region = "polar";
@@ -181,6 +196,9 @@ ClutterSpec read_clutter(YamlSection s, const SensorSpec& sensor) {
     read_interval(s, "elevation", clutter.elevation);
     if (clutter.mean > 0.0 && !std::isfinite(clutter.range[1])) {
       s.error("range", "a polar clutter region needs a range interval (or sensor.max_range)");
+    }
+    if (clutter.mean > 0.0 && dimensions == 3 && !s.has("elevation")) {
+      s.error("elevation", "a 3-D polar clutter region needs an elevation interval [rad]");
     }
   } else {
     clutter.region = ClutterSpec::Region::kBox;
@@ -220,7 +238,11 @@ Expected<Scenario> read_scenario(const YAML::Node& root, ErrorList& errors) {
     s.finish();
   }
   scenario.sensor = read_sensor(top.section("sensor", true));
-  scenario.clutter = read_clutter(top.section("clutter"), scenario.sensor);
+  scenario.clutter = read_clutter(top.section("clutter"), scenario.sensor, scenario.dimensions);
+  for (auto& patch : top.sections("clutter_patches")) {
+    scenario.clutter_patches.push_back(
+        read_clutter(std::move(patch), scenario.sensor, scenario.dimensions));
+  }
   std::set<std::int64_t> ids;
   for (auto& section : top.sections("targets")) {
     const std::string path = section.path();
@@ -232,9 +254,9 @@ Expected<Scenario> read_scenario(const YAML::Node& root, ErrorList& errors) {
   }
   for (const auto& target : scenario.targets) {
     if (target.parent && !ids.count(*target.parent)) {
-      errors.add(root["targets"], "targets", "target " + std::to_string(target.id) +
-                                                 " names parent " + std::to_string(*target.parent) +
-                                                 " that is not in the list");
+      errors.add(root["targets"], "targets",
+                 "target " + std::to_string(target.id) + " names parent " +
+                     std::to_string(*target.parent) + " that is not in the list");
     }
   }
   top.finish();

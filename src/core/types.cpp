@@ -18,9 +18,12 @@ MeasurementSigma merged(const MeasurementSigma& primary, const MeasurementSigma&
 
 std::string_view to_string(ObjectKind kind) {
   switch (kind) {
-    case ObjectKind::kPoint: return "point";
-    case ObjectKind::kGroup: return "group";
-    case ObjectKind::kExtended: return "extended";
+    case ObjectKind::kPoint:
+      return "point";
+    case ObjectKind::kGroup:
+      return "group";
+    case ObjectKind::kExtended:
+      return "extended";
   }
   return "point";
 }
@@ -34,10 +37,14 @@ std::optional<ObjectKind> parse_object_kind(std::string_view text) {
 
 std::string_view to_string(TrackStatus status) {
   switch (status) {
-    case TrackStatus::kTentative: return "tentative";
-    case TrackStatus::kConfirmed: return "confirmed";
-    case TrackStatus::kCoasting: return "coasting";
-    case TrackStatus::kDeleted: return "deleted";
+    case TrackStatus::kTentative:
+      return "tentative";
+    case TrackStatus::kConfirmed:
+      return "confirmed";
+    case TrackStatus::kCoasting:
+      return "coasting";
+    case TrackStatus::kDeleted:
+      return "deleted";
   }
   return "tentative";
 }

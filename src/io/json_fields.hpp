@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include <Eigen/Core>
 #include <simdjson.h>
+#include <Eigen/Core>
 
 #include "skytrack/core/expected.hpp"
 
@@ -104,7 +104,7 @@ Expected<std::optional<T>> optional_field(const object& obj, std::string_view pa
 
 /// A 2- or 3-component vector of finite numbers; `dims` receives the count.
 inline Expected<Eigen::Vector3d> as_vector23(const element& value, const std::string& path,
-                                            int* dims = nullptr) {
+                                             int* dims = nullptr) {
   auto arr = as_array(value, path);
   if (!arr) return unexpected(arr.error());
   const std::size_t size = arr->size();

@@ -63,9 +63,9 @@ std::optional<Record> JsonLinesReader<Record>::next() {
     // Reserve simdjson's padding so the line is parsed in place, without a copy.
     line_.reserve(line_.size() + simdjson::SIMDJSON_PADDING);
     auto root = parse_json_line(line_, line_.capacity());
-    Expected<Record> record = root ? parse_record(*root, static_cast<Record*>(nullptr),
-                                                  rejected_plots)
-                                   : unexpected(root.error());
+    Expected<Record> record =
+        root ? parse_record(*root, static_cast<Record*>(nullptr), rejected_plots)
+             : unexpected(root.error());
     if (!record) {
       ++counts_.rejected_lines;
       if (on_error_) on_error_(LineError{path_, line_number, record.error().message});

@@ -25,11 +25,21 @@ void put_string(Buffer& out, std::string_view text) {
   out.push_back('"');
   for (const char c : text) {
     switch (c) {
-      case '"': fmt::format_to(std::back_inserter(out), "\\\""); break;
-      case '\\': fmt::format_to(std::back_inserter(out), "\\\\"); break;
-      case '\n': fmt::format_to(std::back_inserter(out), "\\n"); break;
-      case '\r': fmt::format_to(std::back_inserter(out), "\\r"); break;
-      case '\t': fmt::format_to(std::back_inserter(out), "\\t"); break;
+      case '"':
+        fmt::format_to(std::back_inserter(out), "\\\"");
+        break;
+      case '\\':
+        fmt::format_to(std::back_inserter(out), "\\\\");
+        break;
+      case '\n':
+        fmt::format_to(std::back_inserter(out), "\\n");
+        break;
+      case '\r':
+        fmt::format_to(std::back_inserter(out), "\\r");
+        break;
+      case '\t':
+        fmt::format_to(std::back_inserter(out), "\\t");
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
           fmt::format_to(std::back_inserter(out), "\\u{:04x}", static_cast<unsigned>(c));
@@ -114,8 +124,7 @@ void put_plot(Buffer& out, const Plot& plot) {
   out.push_back('}');
 }
 
-void put_header(Buffer& out, std::uint32_t sensor, std::uint64_t scan, double time,
-                bool& first) {
+void put_header(Buffer& out, std::uint32_t sensor, std::uint64_t scan, double time, bool& first) {
   put_key(out, "sensor", first);
   fmt::format_to(std::back_inserter(out), "{}", sensor);
   put_key(out, "scan", first);
@@ -281,7 +290,9 @@ JsonLinesWriter& JsonLinesWriter::operator=(JsonLinesWriter&& other) noexcept {
   return *this;
 }
 
-JsonLinesWriter::~JsonLinesWriter() { close(); }
+JsonLinesWriter::~JsonLinesWriter() {
+  close();
+}
 
 bool JsonLinesWriter::write_line(const std::string& json) {
   if (!file_) return false;

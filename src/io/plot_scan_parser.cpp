@@ -26,11 +26,13 @@ Expected<MeasurementSigma> parse_sigma(const element& value, const std::string& 
     const char* key;
     std::optional<double> MeasurementSigma::*member;
   };
-  static constexpr Slot kSlots[] = {
-      {"range", &MeasurementSigma::range},           {"azimuth", &MeasurementSigma::azimuth},
-      {"elevation", &MeasurementSigma::elevation},   {"range_rate", &MeasurementSigma::range_rate},
-      {"x", &MeasurementSigma::x},                   {"y", &MeasurementSigma::y},
-      {"z", &MeasurementSigma::z}};
+  static constexpr Slot kSlots[] = {{"range", &MeasurementSigma::range},
+                                    {"azimuth", &MeasurementSigma::azimuth},
+                                    {"elevation", &MeasurementSigma::elevation},
+                                    {"range_rate", &MeasurementSigma::range_rate},
+                                    {"x", &MeasurementSigma::x},
+                                    {"y", &MeasurementSigma::y},
+                                    {"z", &MeasurementSigma::z}};
   for (const Slot& slot : kSlots) {
     auto number = optional_field<double>(*obj, path, slot.key, positive);
     if (!number) return unexpected(number.error());

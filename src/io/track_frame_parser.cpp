@@ -54,7 +54,8 @@ Expected<TrackReport> parse_track(const element& value, const std::string& path)
   if (!status) return unexpected(status.error());
   const auto parsed_status = parse_track_status(*status);
   if (!parsed_status) {
-    return make_error(join(path, "status") + ": expected tentative, confirmed, coasting or deleted");
+    return make_error(join(path, "status") +
+                      ": expected tentative, confirmed, coasting or deleted");
   }
   track.status = *parsed_status;
   auto kind = optional_field<std::string_view>(*obj, path, "kind", as_string);
@@ -73,7 +74,8 @@ Expected<TrackReport> parse_track(const element& value, const std::string& path)
     int dims = 0;
     auto v = as_vector23(*velocity, join(path, "velocity"), &dims);
     if (!v) return unexpected(v.error());
-    if (dims != track.dims) return make_error(join(path, "velocity") + ": dims differ from position");
+    if (dims != track.dims)
+      return make_error(join(path, "velocity") + ": dims differ from position");
     track.velocity = *v;
   }
   if (const auto covariance = field(*obj, "covariance")) {

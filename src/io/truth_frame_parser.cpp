@@ -33,7 +33,8 @@ Expected<TruthObject> parse_truth_object(const element& value, const std::string
     int dims = 0;
     auto v = as_vector23(*velocity, join(path, "velocity"), &dims);
     if (!v) return unexpected(v.error());
-    if (dims != object.dims) return make_error(join(path, "velocity") + ": dims differ from position");
+    if (dims != object.dims)
+      return make_error(join(path, "velocity") + ": dims differ from position");
     object.velocity = *v;
   }
   auto extent = optional_field<Eigen::Matrix2d>(*obj, path, "extent", as_extent);

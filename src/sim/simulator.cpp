@@ -25,7 +25,9 @@ Eigen::Matrix2d heading_rotation(const Eigen::Vector3d& velocity) {
   return r;
 }
 
-bool needs(const std::optional<double>& sigma) { return sigma.has_value() && *sigma > 0.0; }
+bool needs(const std::optional<double>& sigma) {
+  return sigma.has_value() && *sigma > 0.0;
+}
 
 }  // namespace
 
@@ -73,14 +75,15 @@ Expected<void> Simulator::build_targets() {
     initial.position = spec->trajectory.position;
     initial.velocity = spec->trajectory.velocity;
     if (spec->parent) {
-      const auto parent = std::find_if(targets_.begin(), targets_.end(), [&](const Target& t) {
-        return t.spec.id == *spec->parent;
-      });
+      const auto parent = std::find_if(targets_.begin(), targets_.end(),
+                                       [&](const Target& t) { return t.spec.id == *spec->parent; });
       if (parent == targets_.end()) {
         return make_error("targets: target " + std::to_string(spec->id) + " has parent " +
                           std::to_string(*spec->parent) + " that is not born before it");
       }
-      initial.position = parent->trajectory.at(spec->birth).position + spec->offset;
+      const KinematicState at_birth = parent->trajectory.at(spec->birth);
+      initial.position = at_birth.position + spec->offset;
+      if (spec->velocity_from_parent) initial.velocity = at_birth.velocity;
     }
     Target target{*spec, Trajectory(spec->trajectory, initial, spec->birth, dims), {}};
     if (spec->kind == ObjectKind::kGroup) {
@@ -190,7 +193,8 @@ std::optional<Plot> Simulator::measure(const Eigen::Vector3d& position,
     plot.azimuth = wrap_angle(polar.azimuth + *sensor.sigma.azimuth * unit[k++]);
     if (three_d) plot.elevation = polar.elevation + *sensor.sigma.elevation * unit[k++];
     if (sensor.range_rate) {
-      plot.range_rate = range_rate(position, velocity, platform) + *sensor.sigma.range_rate * unit[k++];
+      plot.range_rate =
+          range_rate(position, velocity, platform) + *sensor.sigma.range_rate * unit[k++];
     }
   } else {
     const int dims = three_d ? 3 : 2;
@@ -206,17 +210,19 @@ std::optional<Plot> Simulator::measure(const Eigen::Vector3d& position,
   return plot;
 }
 
-void Simulator::add_target_plots(const Target& target, double begin,
-                                 std::vector<TimedPlot>& out) {
+void Simulator::add_target_plots(const Target& target, double begin, std::vector<TimedPlot>& out) {
   const TargetSpec& spec = target.spec;
   const bool rotating = scenario_.sensor.antenna == SensorSpec::Antenna::kRotating;
-  const double time = rotating ? illumination_time(
-                                     [&](double t) { return target.trajectory.at(t).position; },
-                                     begin)
-                               : begin;
+  const double time =
+      rotating
+          ? illumination_time([&](double t) { return target.trajectory.at(t).position; }, begin)
+          : begin;
   if (!alive(target, time)) return;
   const KinematicState state = target.trajectory.at(time);
-  const double pd = spec.detection_probability.value_or(scenario_.sensor.detection_probability);
+  double pd = spec.detection_probability.value_or(scenario_.sensor.detection_probability);
+  for (const DetectionWindow& window : spec.detection_windows) {
+    if (time >= window.from && time < window.to) pd = window.probability;
+  }
   std::bernoulli_distribution detected(pd);
   const auto emit = [&](const Eigen::Vector3d& position) {
     if (auto plot = measure(position, state.velocity, time)) out.push_back({*plot, time});
@@ -227,8 +233,8 @@ void Simulator::add_target_plots(const Target& target, double begin,
     return;
   }
   if (spec.kind == ObjectKind::kGroup && spec.plot_model == TargetSpec::PlotModel::kMembers) {
-    const Eigen::Matrix2d r = spec.shape_follows_heading ? heading_rotation(state.velocity)
-                                                         : Eigen::Matrix2d::Identity();
+    const Eigen::Matrix2d r =
+        spec.shape_follows_heading ? heading_rotation(state.velocity) : Eigen::Matrix2d::Identity();
     for (const Eigen::Vector2d& offset : target.member_offsets) {
       if (!detected(rng_)) continue;
       Eigen::Vector3d position = state.position;
@@ -249,8 +255,8 @@ void Simulator::add_target_plots(const Target& target, double begin,
   }
 }
 
-void Simulator::add_clutter(double begin, double end, std::vector<TimedPlot>& out) {
-  const ClutterSpec& clutter = scenario_.clutter;
+void Simulator::add_clutter(const ClutterSpec& clutter, double begin, double end,
+                            std::vector<TimedPlot>& out) {
   if (!(clutter.mean > 0.0)) return;
   const bool rotating = scenario_.sensor.antenna == SensorSpec::Antenna::kRotating;
   const bool three_d = scenario_.dimensions == 3;
@@ -269,7 +275,8 @@ void Simulator::add_clutter(double begin, double end, std::vector<TimedPlot>& ou
       position = polar_to_enu(polar, platform_at(time));
       if (!three_d) position.z() = 0.0;
     } else {
-      position = {uniform_in(clutter.x), uniform_in(clutter.y), three_d ? uniform_in(clutter.z) : 0.0};
+      position = {uniform_in(clutter.x), uniform_in(clutter.y),
+                  three_d ? uniform_in(clutter.z) : 0.0};
       if (rotating) time = illumination_time([&](double) { return position; }, begin);
     }
     // Clutter comes from stationary scatterers: its range-rate is the platform's own motion.
@@ -279,14 +286,15 @@ void Simulator::add_clutter(double begin, double end, std::vector<TimedPlot>& ou
 
 void Simulator::generate(double begin, double end, std::vector<TimedPlot>& out) {
   for (const Target& target : targets_) add_target_plots(target, begin, out);
-  add_clutter(begin, end, out);
+  add_clutter(scenario_.clutter, begin, end, out);
+  for (const ClutterSpec& patch : scenario_.clutter_patches) add_clutter(patch, begin, end, out);
 }
 
 TruthFrame Simulator::truth_at(double time) const {
   TruthFrame frame;
   frame.time = time;
   for (const Target& target : targets_) {
-    if (!alive(target, time)) continue;
+    if (!target.spec.in_truth || !alive(target, time)) continue;
     const KinematicState state = target.trajectory.at(time);
     TruthObject object;
     object.id = target.spec.id;
@@ -353,12 +361,14 @@ std::optional<SimulatedBatch> Simulator::next() {
   const double sector = period / sensor.sectors;
   std::vector<std::vector<TimedPlot>> by_sector(static_cast<std::size_t>(sensor.sectors));
   for (TimedPlot& plot : plots) {
-    const int index = std::clamp(static_cast<int>((plot.time - begin) / sector), 0, sensor.sectors - 1);
+    const int index =
+        std::clamp(static_cast<int>((plot.time - begin) / sector), 0, sensor.sectors - 1);
     by_sector[static_cast<std::size_t>(index)].push_back(std::move(plot));
   }
   for (int s = 0; s < sensor.sectors; ++s) {
     const double time = s + 1 == sensor.sectors ? end : begin + (s + 1) * sector;
-    pending_.push_back(make_batch(next_scan_++, time, std::move(by_sector[static_cast<std::size_t>(s)])));
+    pending_.push_back(
+        make_batch(next_scan_++, time, std::move(by_sector[static_cast<std::size_t>(s)])));
   }
   return next();
 }

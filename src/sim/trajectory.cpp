@@ -33,14 +33,13 @@ Trajectory::Trajectory(const TrajectorySpec& spec, double start_time, int dimens
   build(spec, initial, dimensions);
 }
 
-Trajectory::Trajectory(const TrajectorySpec& spec, const KinematicState& initial,
-                       double start_time, int dimensions)
+Trajectory::Trajectory(const TrajectorySpec& spec, const KinematicState& initial, double start_time,
+                       int dimensions)
     : start_time_(start_time) {
   build(spec, initial, dimensions);
 }
 
-void Trajectory::build(const TrajectorySpec& spec, const KinematicState& initial,
-                       int dimensions) {
+void Trajectory::build(const TrajectorySpec& spec, const KinematicState& initial, int dimensions) {
   KinematicState state = initial;
   state.turn_rate = 0.0;
   if (dimensions == 2) {

@@ -77,6 +77,28 @@ targets:
   EXPECT_EQ(scenario->targets[1].parent, 1);
 }
 
+TEST(ScenarioLoader, ReadsDetectionWindowsPatchesAndFalseObjects) {
+  const auto scenario = parse_scenario(std::string(kMinimal) + R"(
+clutter: {mean: 5, range: [100, 1000]}
+clutter_patches:
+  - {mean: 60, region: box, x: [0, 10], y: [0, 10]}
+targets:
+  - id: 1
+    position: [0, 1000]
+    velocity: [300, 0]
+    detection_windows: [{from: 3, to: 6, probability: 0}]
+  - {id: 2, parent: 1, birth: 2, truth: false}
+)",
+                                       "more.yaml");
+  ASSERT_TRUE(scenario) << scenario.error().message;
+  ASSERT_EQ(scenario->clutter_patches.size(), 1u);
+  EXPECT_EQ(scenario->clutter_patches[0].mean, 60.0);
+  ASSERT_EQ(scenario->targets[0].detection_windows.size(), 1u);
+  EXPECT_EQ(scenario->targets[0].detection_windows[0].to, 6.0);
+  EXPECT_FALSE(scenario->targets[1].in_truth);
+  EXPECT_TRUE(scenario->targets[1].velocity_from_parent);
+}
+
 TEST(ScenarioLoader, NamesFileLineKeyAndExpectationForMistakes) {
   const struct {
     const char* yaml;
@@ -143,6 +165,26 @@ targets:
   - {id: 2, parent: 7, velocity: [1, 0]}
 )",
        "target 2 names parent 7 that is not in the list"},
+      {R"(
+scenario: {name: x, duration: 10}
+sensor: {scan_period: 1, sigma: {range: 10, azimuth: 0.001}}
+targets:
+  - {id: 1, position: [0, 0], offset: [5, 0]}
+)",
+       "targets[0].offset: an offset needs a parent"},
+      {R"(
+scenario: {name: x, duration: 10}
+sensor: {scan_period: 1, sigma: {range: 10, azimuth: 0.001}}
+targets:
+  - {id: 1, position: [0, 0], detection_windows: [{from: 5, to: 5, probability: 0}]}
+)",
+       "targets[0].detection_windows[0].to: must be after from"},
+      {R"(
+scenario: {name: x, duration: 10, dimensions: 3}
+sensor: {scan_period: 1, sigma: {range: 10, azimuth: 0.001, elevation: 0.001}}
+clutter: {mean: 5, range: [0, 100]}
+)",
+       "clutter.elevation: a 3-D polar clutter region needs an elevation interval"},
       {"scenario: {name: x\n  duration: [", "bad.yaml: line"},
   };
   for (const auto& c : cases) {

@@ -14,8 +14,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kTol = 1e-9;
 
 void expect_near(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double tol = kTol) {
-  EXPECT_NEAR((a - b).norm(), 0.0, tol) << "got " << a.transpose() << " expected "
-                                        << b.transpose();
+  EXPECT_NEAR((a - b).norm(), 0.0, tol) << "got " << a.transpose() << " expected " << b.transpose();
 }
 
 TEST(Frames, AzimuthIsClockwiseFromNorthForALevelPlatform) {
@@ -47,8 +46,7 @@ TEST(Frames, HeadingRotatesTheBodyClockwise) {
 TEST(Frames, PitchRaisesTheNoseAndRollLowersTheRightWing) {
   PlatformState pitched;
   pitched.attitude = {0.0, kPi / 6, 0.0};  // nose 30 deg up
-  expect_near(polar_to_enu({1000.0, 0.0, 0.0}, pitched),
-              {0.0, 1000.0 * std::sqrt(3.0) / 2, 500.0});
+  expect_near(polar_to_enu({1000.0, 0.0, 0.0}, pitched), {0.0, 1000.0 * std::sqrt(3.0) / 2, 500.0});
   PlatformState rolled;
   rolled.attitude = {0.0, 0.0, kPi / 6};  // right wing 30 deg down
   expect_near(polar_to_enu({1000.0, kPi / 2, 0.0}, rolled),

@@ -19,13 +19,14 @@ std::string write_temp(const std::string& name, const std::string& content) {
 
 TEST(JsonLinesReader, ReportsBadLinesWithNumbersAndKeepsReading) {
   // GIVEN a stream whose 2nd and 4th lines are broken, a blank line and a bad plot
-  const std::string path = write_temp("skytrack_reader_test.plots.jsonl",
-                                      "{\"sensor\":0,\"scan\":0,\"time\":0,\"plots\":[]}\n"
-                                      "{\"sensor\":0,\"scan\":1,\n"
-                                      "\n"
-                                      "not json at all\r\n"
-                                      "{\"sensor\":0,\"scan\":2,\"time\":2,\"plots\":["
-                                      "{\"id\":0,\"x\":1,\"y\":2},{\"id\":1,\"range\":-1,\"azimuth\":0}]}\n");
+  const std::string path =
+      write_temp("skytrack_reader_test.plots.jsonl",
+                 "{\"sensor\":0,\"scan\":0,\"time\":0,\"plots\":[]}\n"
+                 "{\"sensor\":0,\"scan\":1,\n"
+                 "\n"
+                 "not json at all\r\n"
+                 "{\"sensor\":0,\"scan\":2,\"time\":2,\"plots\":["
+                 "{\"id\":0,\"x\":1,\"y\":2},{\"id\":1,\"range\":-1,\"azimuth\":0}]}\n");
   std::vector<LineError> errors;
   auto reader = PlotStreamReader::open(path, [&](const LineError& e) { errors.push_back(e); });
   ASSERT_TRUE(reader);

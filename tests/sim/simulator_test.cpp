@@ -77,8 +77,7 @@ TEST(Simulator, DetectionRateMatchesPd) {
   Scenario scenario = base_scenario();
   scenario.sensor.detection_probability = 0.7;
   for (int i = 0; i < 10; ++i) {
-    scenario.targets.push_back(
-        point_target(i, {1000.0 * (i + 2), 3000.0, 0.0}, {0.0, 10.0, 0.0}));
+    scenario.targets.push_back(point_target(i, {1000.0 * (i + 2), 3000.0, 0.0}, {0.0, 10.0, 0.0}));
   }
   const auto batches = run(scenario, 5);
   std::size_t plots = 0;
@@ -150,8 +149,8 @@ TEST(Simulator, RotatingAntennaTimesEachPlotByItsAzimuth) {
   scenario.sensor.sectors = 4;
   for (int i = 0; i < 12; ++i) {
     const double az = i * std::numbers::pi / 6 + 0.1;
-    scenario.targets.push_back(point_target(
-        i, {20000.0 * std::sin(az), 20000.0 * std::cos(az), 0.0}, {0.0, 0.0, 0.0}));
+    scenario.targets.push_back(
+        point_target(i, {20000.0 * std::sin(az), 20000.0 * std::cos(az), 0.0}, {0.0, 0.0, 0.0}));
   }
   const auto batches = run(scenario, 8);
   // THEN 10 revolutions give 40 batches, stamped at sector ends
@@ -166,7 +165,8 @@ TEST(Simulator, RotatingAntennaTimesEachPlotByItsAzimuth) {
       EXPECT_LE(*p.time, b.plots.time);
       EXPECT_GT(*p.time, b.plots.time - 1.0);
       const double revolution_start = std::floor(b.plots.time / 4.0 - 1e-9) * 4.0;
-      const double expected = revolution_start + wrap_angle_positive(p.azimuth) / (2 * std::numbers::pi) * 4.0;
+      const double expected =
+          revolution_start + wrap_angle_positive(p.azimuth) / (2 * std::numbers::pi) * 4.0;
       // Azimuth noise 0.001 rad moves the beam time by 0.64 ms per sigma: allow 5 sigma.
       EXPECT_NEAR(*p.time, expected, 3.2e-3);
       ++plots;
@@ -215,7 +215,8 @@ TEST(Simulator, GroupMembersEachProduceAPlotAndTruthCarriesTheShape) {
     EXPECT_EQ(b.truth.objects[0].members, 15);
     ASSERT_TRUE(b.truth.objects[0].extent);
     for (const Plot& p : b.plots.plots) {
-      const Eigen::Vector3d d = plot_position_enu(p, b.plots.platform) - b.truth.objects[0].position;
+      const Eigen::Vector3d d =
+          plot_position_enu(p, b.plots.platform) - b.truth.objects[0].position;
       EXPECT_LE(std::hypot(d.x() / 400.0, d.y() / 200.0), 1.0 + 0.01);
     }
   }
@@ -259,6 +260,39 @@ TEST(Simulator, BirthsDeathsAndSplitsFollowTheScenario) {
       EXPECT_NEAR(b.truth.objects[1].position.y(), 1050.0, 1e-9);
     }
   }
+}
+
+TEST(Simulator, DetectionWindowsScriptMissesAndFalseObjectsStayOutOfTheTruth) {
+  // GIVEN a target missed in [3, 6) s and a decoy that is never in the truth
+  Scenario scenario = base_scenario();
+  scenario.duration = 9.0;
+  TargetSpec target = point_target(1, {0.0, 5000.0, 0.0}, {10.0, 0.0, 0.0});
+  target.detection_windows = {{3.0, 6.0, 0.0}};
+  TargetSpec decoy = point_target(2, {3000.0, 5000.0, 0.0}, {0.0, 0.0, 0.0});
+  decoy.in_truth = false;
+  scenario.targets = {target, decoy};
+  for (const auto& b : run(scenario, 13)) {
+    const double t = b.plots.time;
+    // THEN the target's plot is missing exactly in the window, the decoy always plots
+    EXPECT_EQ(b.plots.plots.size(), (t >= 3.0 && t < 6.0) ? 1u : 2u) << "t=" << t;
+    ASSERT_EQ(b.truth.objects.size(), 1u);
+    EXPECT_EQ(b.truth.objects[0].id, 1);
+  }
+}
+
+TEST(Simulator, ClutterPatchesAddToTheBackground) {
+  Scenario scenario = base_scenario();
+  scenario.clutter.mean = 10.0;
+  ClutterSpec patch;
+  patch.mean = 30.0;
+  patch.region = ClutterSpec::Region::kBox;
+  patch.x = {1000.0, 2000.0};
+  patch.y = {1000.0, 2000.0};
+  scenario.clutter_patches = {patch};
+  double total = 0.0;
+  const auto batches = run(scenario, 14);
+  for (const auto& b : batches) total += static_cast<double>(b.plots.plots.size());
+  EXPECT_NEAR(total / batches.size(), 40.0, 0.8);  // standard error 0.2
 }
 
 TEST(Simulator, RejectsASensorWithoutTheSigmasItNeeds) {

@@ -187,7 +187,8 @@ struct RunCounts {
 class TrackFrameMatcher {
  public:
   using Source = std::function<std::optional<TrackFrame>()>;
-  TrackFrameMatcher(Source source, RunCounts& counts) : source_(std::move(source)), counts_(counts) {
+  TrackFrameMatcher(Source source, RunCounts& counts)
+      : source_(std::move(source)), counts_(counts) {
     advance();
   }
 

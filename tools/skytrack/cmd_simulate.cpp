@@ -53,8 +53,8 @@ int run_simulate(const SimulateOptions& options) {
     fmt::print(stderr, "write failed ({} or {})\n", options.plots, options.truth);
     return 2;
   }
-  fmt::print(stderr, "simulated '{}' (seed {}): {} scans, {} plots -> {}, {}\n", name, seed,
-             scans, plot_count, options.plots, options.truth);
+  fmt::print(stderr, "simulated '{}' (seed {}): {} scans, {} plots -> {}, {}\n", name, seed, scans,
+             plot_count, options.plots, options.truth);
   return 0;
 }
 

@@ -63,11 +63,11 @@ class YamlSection {
   /// A list of strings (e.g. names referring to other entries).
   void texts(std::string_view key, std::vector<std::string>& out, bool required = false);
   /// A string from a closed set.
-  void choice(std::string_view key, std::string& out, std::initializer_list<std::string_view> allowed,
-              bool required = false);
+  void choice(std::string_view key, std::string& out,
+              std::initializer_list<std::string_view> allowed, bool required = false);
   /// A list of numbers; `sizes` lists the accepted lengths (empty: any non-empty length).
-  void numbers(std::string_view key, std::vector<double>& out, std::initializer_list<int> sizes = {},
-               Range range = {}, bool required = false);
+  void numbers(std::string_view key, std::vector<double>& out,
+               std::initializer_list<int> sizes = {}, Range range = {}, bool required = false);
   /// A list of lists of numbers (a matrix), every row of the same length.
   void matrix(std::string_view key, std::vector<std::vector<double>>& out, bool required = false);
 

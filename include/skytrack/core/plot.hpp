@@ -31,9 +31,9 @@ enum class PlotForm : std::uint8_t { kPolar, kCartesian };
 struct Plot {
   std::int64_t id = 0;
   PlotForm form = PlotForm::kPolar;
-  std::optional<double> time;  // [s] own measurement time; absent -> the scan's time
-  double range = 0.0;          // [m]
-  double azimuth = 0.0;        // [rad] clockwise from the body's nose
+  std::optional<double> time;        // [s] own measurement time; absent -> the scan's time
+  double range = 0.0;                // [m]
+  double azimuth = 0.0;              // [rad] clockwise from the body's nose
   std::optional<double> elevation;   // [rad] up from the body horizontal
   std::optional<double> range_rate;  // [m/s] positive when opening
   double x = 0.0, y = 0.0;           // [m]

@@ -20,8 +20,8 @@ struct TruthObject {
   int dims = 2;                                        // 2 or 3 position components
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // [m], z = 0 when dims == 2
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // [m/s]
-  std::optional<Eigen::Matrix2d> extent;  // SPD shape matrix X [m^2] (group, extended)
-  std::optional<int> members;             // number of targets in a group
+  std::optional<Eigen::Matrix2d> extent;               // SPD shape matrix X [m^2] (group, extended)
+  std::optional<int> members;                          // number of targets in a group
 
   bool operator==(const TruthObject&) const = default;
 };

@@ -1,7 +1,7 @@
 #pragma once
 // A simulated scenario: targets on piecewise manoeuvres, a (possibly airborne) sensor
 // platform, a polar or Cartesian sensor and Poisson clutter. Plain data; the YAML schema is in
-// config/README.md ("Scenario files") and the loader in config/scenario_loader.hpp.
+// docs/scenarios.md and the loader in config/scenario_loader.hpp.
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -35,16 +35,29 @@ struct TrajectorySpec {
   std::vector<SegmentSpec> segments;
 };
 
+/// A time window [from, to) in which a target's detection probability is overridden, e.g. to
+/// script consecutive missed detections.
+struct DetectionWindow {
+  double from = 0.0;  // [s]
+  double to = 0.0;    // [s]
+  double probability = 0.0;
+};
+
 struct TargetSpec {
   std::int64_t id = 0;
   ObjectKind kind = ObjectKind::kPoint;
-  double birth = 0.0;                                        // [s]
-  double death = std::numeric_limits<double>::infinity();    // [s]
+  double birth = 0.0;                                      // [s]
+  double death = std::numeric_limits<double>::infinity();  // [s]
   TrajectorySpec trajectory;
   /// Born at the parent's position (plus offset) at `birth`: a split or a spawned target.
   std::optional<std::int64_t> parent;
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();
-  std::optional<double> detection_probability;  // overrides the sensor's
+  bool velocity_from_parent = false;  // a child without its own velocity keeps the parent's
+  std::optional<double> detection_probability;     // overrides the sensor's
+  std::vector<DetectionWindow> detection_windows;  // override both within their windows
+  /// False for scripted false plots (a decoy or a planted false alarm): the object makes plots
+  /// but never appears in the truth.
+  bool in_truth = true;
   // Groups: `members` targets at fixed offsets drawn uniformly in the `shape` ellipse.
   // Extended objects: plots scattered uniformly over the `shape` ellipse.
   int members = 0;
@@ -71,10 +84,10 @@ struct SensorSpec {
   Antenna antenna = Antenna::kSnapshot;
   int sectors = 1;  // rotating antenna: batches per revolution
   double detection_probability = 1.0;
-  double min_range = 0.0;                                       // [m]
+  double min_range = 0.0;                                      // [m]
   double max_range = std::numeric_limits<double>::infinity();  // [m]
-  bool range_rate = false;  // polar sensors: report range-rate
-  MeasurementSigma sigma;   // noise standard deviations (or ellipsoid semi-axes if bounded)
+  bool range_rate = false;                                     // polar sensors: report range-rate
+  MeasurementSigma sigma;  // noise standard deviations (or ellipsoid semi-axes if bounded)
   enum class Noise : std::uint8_t { kGaussian, kBounded };
   Noise noise = Noise::kGaussian;
   bool write_sigma = true;  // put `sigma` in each scan line
@@ -101,7 +114,8 @@ struct Scenario {
   std::uint64_t seed = 1;
   PlatformSpec platform;
   SensorSpec sensor;
-  ClutterSpec clutter;
+  ClutterSpec clutter;                       // background clutter
+  std::vector<ClutterSpec> clutter_patches;  // extra Poisson regions, e.g. a dense patch
   std::vector<TargetSpec> targets;
 };
 

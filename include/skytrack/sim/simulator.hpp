@@ -59,7 +59,8 @@ class Simulator {
 
   void generate(double begin, double end, std::vector<TimedPlot>& out);
   void add_target_plots(const Target& target, double begin, std::vector<TimedPlot>& out);
-  void add_clutter(double begin, double end, std::vector<TimedPlot>& out);
+  void add_clutter(const ClutterSpec& clutter, double begin, double end,
+                   std::vector<TimedPlot>& out);
   std::optional<Plot> measure(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
                               double time);
   Eigen::VectorXd bounded_noise(int dims);

@@ -1,0 +1,106 @@
+// Runs the `skytrack` binary as a user would and checks what it prints.
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <simdjson.h>
+
+namespace {
+
+using ::testing::HasSubstr;
+
+struct RunResult {
+  int exit_code = -1;
+  std::string output;  // stdout and stderr
+};
+
+RunResult run(const std::string& arguments) {
+  const std::string command = std::string(SKYTRACK_TOOL) + " " + arguments + " 2>&1";
+  RunResult result;
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
+  std::array<char, 4096> buffer{};
+  std::size_t n = 0;
+  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe.get())) > 0) {
+    result.output.append(buffer.data(), n);
+  }
+  const int status = pclose(pipe.release());
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string data(const std::string& name) {
+  return std::string(SKYTRACK_SOURCE_DIR) + "/tests/tools/data/" + name;
+}
+
+/// A number from the JSON summary line that `eval --json` prints.
+double json_value(const std::string& output, const char* key) {
+  const std::size_t start = output.find("{\"gospa_mean\"");
+  if (start == std::string::npos) return std::nan("");
+  const std::string line = output.substr(start, output.find('\n', start) - start);
+  simdjson::dom::parser parser;
+  double value = std::nan("");
+  const auto element = parser.parse(line)[key];
+  if (element.get_double().get(value) != simdjson::SUCCESS) {
+    std::int64_t integer = 0;
+    if (element.get_int64().get(integer) == simdjson::SUCCESS) value = static_cast<double>(integer);
+  }
+  return value;
+}
+
+TEST(SkytrackEval, HandMadeCaseGivesTheHandComputedGospa) {
+  // t=0: truth {(0,0), (100,0)}, firm tracks {(3,4), (500,0)}, c = 20, p = 2:
+  //   GOSPA^2 = 5^2 + c^2/2 (1 missed + 1 false) = 425, OSPA^2 = (25 + 400) / 2.
+  // t=1: truth {(10,0)}, no tracks: GOSPA^2 = c^2/2 = 200, OSPA = c.
+  const RunResult r = run("eval --truth " + data("hand.truth.jsonl") + " --tracks " +
+                          data("hand.tracks.jsonl") + " --cutoff 20 --order 2 --json");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NEAR(json_value(r.output, "gospa_mean"), (std::sqrt(425.0) + std::sqrt(200.0)) / 2, 1e-9);
+  EXPECT_NEAR(json_value(r.output, "ospa_mean"), (std::sqrt(425.0 / 2) + 20.0) / 2, 1e-9);
+  EXPECT_NEAR(json_value(r.output, "gospa_missed_mean"), 1.0, 1e-12);
+  EXPECT_NEAR(json_value(r.output, "gospa_false_mean"), 0.5, 1e-12);
+  EXPECT_NEAR(json_value(r.output, "rmse_position"), 5.0, 1e-9);
+  EXPECT_EQ(json_value(r.output, "scans"), 2.0);
+  EXPECT_EQ(json_value(r.output, "track_lines_rejected"), 1.0);
+  EXPECT_THAT(r.output, HasSubstr("hand.tracks.jsonl:2: invalid JSON"));
+}
+
+TEST(SkytrackSimulateAndEval, TruthAgainstItselfScoresZero) {
+  const auto dir = std::filesystem::temp_directory_path() / "skytrack_cli_test";
+  std::filesystem::create_directories(dir);
+  const std::string plots = (dir / "d.plots.jsonl").string(),
+                    truth = (dir / "d.truth.jsonl").string();
+  const RunResult sim =
+      run("simulate --scenario " + std::string(SKYTRACK_SOURCE_DIR) +
+          "/config/scenarios/default.yaml --plots " + plots + " --truth " + truth + " --seed 5");
+  ASSERT_EQ(sim.exit_code, 0) << sim.output;
+  EXPECT_THAT(sim.output, HasSubstr("seed 5"));
+  const RunResult r = run("eval --truth " + truth + " --tracks " + truth + " --json --plot " +
+                          (dir / "d.svg").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_EQ(json_value(r.output, "gospa_mean"), 0.0);
+  EXPECT_EQ(json_value(r.output, "ospa_mean"), 0.0);
+  EXPECT_EQ(json_value(r.output, "id_changes"), 0.0);
+  EXPECT_GT(json_value(r.output, "scans"), 10.0);
+  EXPECT_GT(std::filesystem::file_size(dir / "d.svg"), 1000u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(SkytrackSimulate, BadScenarioIsReportedWithItsKeyAndFails) {
+  const RunResult r = run("simulate --scenario " + data("hand.truth.jsonl") +
+                          " --plots /dev/null --truth /dev/null");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_THAT(r.output, HasSubstr("hand.truth.jsonl"));
+}
+
+TEST(SkytrackEval, MissingFileFailsWithItsName) {
+  const RunResult r = run("eval --truth /nonexistent/t.jsonl --tracks /nonexistent/k.jsonl");
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_THAT(r.output, HasSubstr("/nonexistent/t.jsonl"));
+}
+
+}  // namespace
