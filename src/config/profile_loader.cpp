@@ -332,7 +332,14 @@ TrackingProfile read_profile(const YAML::Node& node, ErrorList& errors) {
   read_enum(root, "mode", p.mode,
             {TrackingMode::kPoint, TrackingMode::kGroup, TrackingMode::kExtended,
              TrackingMode::kBernoulli});
-  root.integer("dimension", p.dimension, Range{2.0, 3.0});
+  if (root.has("dimension") && root.node()["dimension"].IsScalar() &&
+      root.node()["dimension"].Scalar() == "auto") {
+    std::string ignored;
+    root.text("dimension", ignored);
+    p.dimension = 0;
+  } else {
+    root.integer("dimension", p.dimension, Range{2.0, 3.0});
+  }
   p.measurement = read_measurement(root.section("measurement"));
   read_motion_models(root, p.motion_models);
 

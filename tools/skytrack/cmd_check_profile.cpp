@@ -17,9 +17,10 @@ std::string summary(const std::string& path, const config::TrackingProfile& prof
   for (const auto& model : profile.motion_models) {
     models += (models.empty() ? "" : ", ") + model.name;
   }
-  return fmt::format("{}: ok: {} version {}, mode {}, {}-D, models {}", path, profile.identity.name,
-                     profile.identity.version, config::to_string(profile.mode), profile.dimension,
-                     models);
+  const std::string dims =
+      profile.dimension == 0 ? std::string("auto 2-D/3-D") : fmt::format("{}-D", profile.dimension);
+  return fmt::format("{}: ok: {} version {}, mode {}, {}, models {}", path, profile.identity.name,
+                     profile.identity.version, config::to_string(profile.mode), dims, models);
 }
 
 }  // namespace

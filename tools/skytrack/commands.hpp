@@ -8,5 +8,6 @@ namespace skytrack::tool {
 void add_simulate_command(CLI::App& app, int& exit_code);
 void add_eval_command(CLI::App& app, int& exit_code);
 void add_check_profile_command(CLI::App& app, int& exit_code);
+void add_track_command(CLI::App& app, int& exit_code);
 
 }  // namespace skytrack::tool

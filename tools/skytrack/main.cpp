@@ -1,4 +1,4 @@
-// skytrack: the command-line tool (simulate, eval; track, replay and record later).
+// skytrack: the command-line tool (simulate, track, eval, check-profile).
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   skytrack::tool::add_simulate_command(app, exit_code);
   skytrack::tool::add_eval_command(app, exit_code);
   skytrack::tool::add_check_profile_command(app, exit_code);
+  skytrack::tool::add_track_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
 }

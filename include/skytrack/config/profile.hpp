@@ -78,7 +78,7 @@ struct AssociationSpec {
   // Clutter spatial density in the tracking frame [1/m^2 in 2-D, 1/m^3 in 3-D]; empty means
   // "auto": estimated from each scan.
   std::optional<double> clutter_density;
-  int max_exact_cluster_size = 8;  // [tracks] exact JPDA marginals up to this cluster size
+  int max_exact_cluster_size = 32;  // [tracks] exact JPDA marginals up to this cluster size
   int k_best = 100;                // joint events from Murty's k-best above it
   bool operator==(const AssociationSpec&) const = default;
 };
@@ -138,7 +138,7 @@ struct BranchingSpec {
 struct TrackingProfile {
   ProfileIdentity identity;
   TrackingMode mode = TrackingMode::kPoint;
-  int dimension = 3;  // 2: state [x vx y vy]; 3: adds [z vz]
+  int dimension = 0;  // 2: state [x vx y vy]; 3: adds [z vz]; 0 = auto (from the plots)
   MeasurementSpec measurement;
   std::vector<MotionModelSpec> motion_models = {
       {.name = "cv", .type = MotionModelType::kConstantVelocity, .accel_sigma = 1.0},

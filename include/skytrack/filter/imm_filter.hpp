@@ -1,0 +1,122 @@
+#pragma once
+// Interacting multiple model filter with PDA/JPDA measurement weights
+// (Blom & Bar-Shalom 1988; paper 003 §3.1 eq. 1-7 and §3.2 eq. 8-10).
+//   mixing      c_j = sum_i p_ij mu_i,  mu_i|j = p_ij mu_i / c_j                (eq. 1-2)
+//               x0j = sum_i mu_i|j x_i,  P0j = sum_i mu_i|j (P_i + dx dx')
+//   prediction  each mode with its own motion model (motion/motion_model.hpp)
+//   update      per mode: the PDA update with the track's JPDA weights (filter/pda.hpp)
+//   mode prob.  eq. 3-5 extended to data association, see below
+//   output      x = sum_j mu_j x_j,  P = sum_j mu_j (P_j + dx dx')               (eq. 6-7)
+//
+// Mode probabilities under association uncertainty. With plot likelihoods
+// N_ij = N(nu_ij; 0, S_ij) (eq. 3) and the IMM-weighted plot likelihood
+// L_i = sum_j c_j N_ij that the JPDA events are evaluated with (eq. 8-10),
+//   mu_j = P(M_j | Z) = sum_theta P(M_j | theta, Z) beta_theta
+//        = c_j (beta_0 + sum_i beta_i N_ij / L_i),
+// because under the miss hypothesis no mode is favoured (P(M_j | theta_0) = c_j) and under
+// "plot i is the target's" it is eq. 4-5 with that plot (c_j N_ij / L_i). This
+//   * reduces to eq. 3-5 exactly for one plot with beta_1 = 1;
+//   * for an isolated track whose beta are the PDA weights (pda_weights) equals the
+//     standard IMM-PDA form mu_j ~ c_j Lambda_j,
+//     Lambda_j = (1 - PD PG) + (PD / lambda) sum_i N_ij (the IMM-PDAF of Houles &
+//     Bar-Shalom 1989, IEEE Trans. AES-25(2)), since beta_0 and beta_i share its normaliser;
+//   * in a JPDA cluster uses the same marginals as the state update, so a plot that another
+//     track most likely owns does not drive this track's mode probabilities.
+// So the implemented form is the beta-weighted one; PD, PG and lambda are used only when the
+// given weights are unusable (sum <= 0 or not finite): the track is then treated as isolated
+// and weighted by pda_weights.
+//
+// Numerics: a mode whose innovation for a plot with beta_i > 0 failed (S not positive
+// definite) keeps its prediction and sets its bit in failed_modes; its N_ij count as 0.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "skytrack/config/profile.hpp"
+#include "skytrack/core/expected.hpp"
+#include "skytrack/filter/innovation.hpp"
+#include "skytrack/filter/state.hpp"
+#include "skytrack/measurement/plot_measurement.hpp"
+#include "skytrack/motion/motion_model.hpp"
+
+namespace skytrack {
+
+inline constexpr int kMaxImmModes = 32;
+
+struct ImmEstimate {
+  std::vector<Gaussian> modes;     // one per mode, all in the filter's StateLayout
+  Eigen::VectorXd probabilities;   // mu_j (posterior) or c_j (after predict)
+  double time = 0.0;               // [s]
+  std::uint32_t failed_modes = 0;  // bit j: mode j kept its prediction (numeric failure)
+
+  bool numeric_failure() const noexcept { return failed_modes != 0; }
+};
+
+/// One plot evaluated against every mode of one track's prediction.
+struct PlotHypothesis {
+  std::vector<Innovation> per_mode;
+  double likelihood = 0.0;      // L = sum_j c_j N(nu_j; 0, S_j): what JPDA weighs events with
+  double log_likelihood = 0.0;  // log L (finite far beyond where L underflows); -inf if unusable
+  double max_nis = 0.0;         // over the usable modes
+  double min_nis = 0.0;         // over the usable modes (union-of-gates test)
+  bool usable = false;          // at least one mode's innovation is ok
+};
+
+class ImmFilter {
+ public:
+  /// `transition`: Markov matrix p_ij = P(mode j now | mode i before), rows sum to 1. The
+  /// arguments must be valid (create() checks them; the constructor only asserts).
+  ImmFilter(std::vector<AnyMotionModel> models, std::vector<std::string> names,
+            Eigen::MatrixXd transition, StateLayout layout, config::MeasurementSpec measurement);
+
+  /// Checks sizes, the Markov matrix, the layout against the models, and the parameters.
+  static Expected<ImmFilter> create(std::vector<AnyMotionModel> models,
+                                    std::vector<std::string> names, Eigen::MatrixXd transition,
+                                    StateLayout layout, config::MeasurementSpec measurement);
+  /// The profile's models, Markov matrix and measurement settings, in the profile's
+  /// dimension, or in `auto_dims` when the profile leaves it to the plots (dimension 0).
+  static Expected<ImmFilter> from_profile(const config::TrackingProfile& profile,
+                                          int auto_dims = 3);
+
+  /// Every mode starts at `state`; probabilities are normalised (uniform if unusable).
+  ImmEstimate initial(const Gaussian& state, const Eigen::VectorXd& probabilities,
+                      double time) const;
+
+  /// Mixing (eq. 1-2) and per-mode prediction to `time`; the result's probabilities are the
+  /// predicted c_j.
+  ImmEstimate predict(const ImmEstimate& posterior, double time) const noexcept;
+
+  /// Innovations of one plot against every mode of a prediction.
+  PlotHypothesis hypothesise(const ImmEstimate& predicted,
+                             const PlotMeasurement& measurement) const noexcept;
+
+  /// Per-mode PDA update with the track's association weights and the mode probabilities
+  /// described at the top of this file. hypotheses[i] pairs with beta_plots[i]; the weights
+  /// are renormalised with beta_miss to sum to 1.
+  ImmEstimate update(const ImmEstimate& predicted, std::span<const PlotHypothesis> hypotheses,
+                     std::span<const double> beta_plots, double beta_miss,
+                     double detection_probability, double gate_probability,
+                     double clutter_density) const noexcept;
+
+  /// Combined estimate, eq. 6-7.
+  Gaussian combine(const ImmEstimate& estimate) const noexcept;
+
+  const std::vector<std::string>& names() const { return names_; }
+  const std::vector<AnyMotionModel>& models() const { return models_; }
+  const Eigen::MatrixXd& transition() const { return transition_; }
+  const StateLayout& layout() const { return layout_; }
+  const config::MeasurementSpec& measurement_spec() const { return measurement_; }
+  int mode_count() const { return static_cast<int>(models_.size()); }
+
+ private:
+  std::vector<AnyMotionModel> models_;
+  std::vector<std::string> names_;
+  Eigen::MatrixXd transition_;
+  StateLayout layout_;
+  config::MeasurementSpec measurement_;
+};
+
+}  // namespace skytrack

@@ -1,0 +1,48 @@
+#pragma once
+// From a plot of a scan to a measurement the filters use (CONTRACTS.md §1 plot fields).
+//
+// Which model a plot gives (tracker_dims = the tracker's position dimensions):
+//   Cartesian x, y, z   3-D tracker: (x, y, z).           2-D tracker: (x, y), z dropped.
+//   Cartesian x, y      3-D tracker: (x, y) of the 3-D state.   2-D tracker: (x, y).
+//   polar r, az (, el)  3-D tracker: 3-D polar (slant range, az (, el)) relative to the
+//                       platform with its full attitude; without elevation the plot measures
+//                       the slant range and azimuth of the 3-D state.
+//                       2-D tracker: the plot is placed in ENU with the full attitude
+//                       (el = 0 when absent), then re-expressed as horizontal polar
+//                       (rho, az_h) about the platform's horizontal position, az_h from the
+//                       heading. For a level platform this is exactly (r cos el, az).
+//   (+ range-rate)      kept as the last component. 2-D tracker: projected on the horizontal
+//                       line of sight assuming the target flies level,
+//                       rdot_h = (r rdot + dz v_sz) / rho, sigma scaled by r / rho.
+// Sigma precedence: plot.sigma > scan.sigma > the profile's defaults. 2-D horizontal range
+// sigma: sigma_rho^2 = (sigma_r rho / r)^2 + (dz sigma_el)^2 (first-order propagation).
+#include <cstdint>
+
+#include <Eigen/Core>
+
+#include "skytrack/config/profile.hpp"
+#include "skytrack/core/expected.hpp"
+#include "skytrack/core/plot.hpp"
+#include "skytrack/measurement/measurement_model.hpp"
+
+namespace skytrack {
+
+struct PlotMeasurement {
+  MeasurementModel model;
+  MeasVec z;
+  double time = 0.0;  // [s] plot_time(plot, scan)
+  std::int64_t plot_id = 0;
+};
+
+/// Fails on non-finite values, a non-positive range or sigma, |elevation| > pi/2, a 2-D
+/// tracker's plot straight above or below the platform, or tracker_dims not 2 or 3.
+Expected<PlotMeasurement> measurement_from_plot(const Plot& plot, const PlotScan& scan,
+                                                const config::MeasurementSigmas& defaults,
+                                                int tracker_dims);
+
+/// The plot's position in the tracking frame, for gating indexes and initiation. Polar plots
+/// without elevation are placed at el = 0 in the body frame (as plot_position_enu does);
+/// 2-D measurements (state_dims == 2) return z = 0.
+Eigen::Vector3d approximate_position(const PlotMeasurement& measurement) noexcept;
+
+}  // namespace skytrack

@@ -1,0 +1,68 @@
+#pragma once
+// The per-batch composition shared by the daemon and the tools: validation (bad plots and
+// out-of-order batches are counted and skipped, never fatal), then the tracker the profile's
+// mode selects. One Pipeline::process call per plot batch, in arrival order.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "skytrack/config/profile.hpp"
+#include "skytrack/core/expected.hpp"
+#include "skytrack/core/plot.hpp"
+#include "skytrack/core/track_report.hpp"
+#include "skytrack/tracking/point_tracker.hpp"
+
+namespace skytrack {
+
+/// Totals since the pipeline started, by reason.
+struct PipelineCounters {
+  std::uint64_t scans_processed = 0;
+  std::uint64_t scans_rejected = 0;  // out of order, duplicate, bad time
+  std::uint64_t plots_processed = 0;
+  std::uint64_t plots_invalid = 0;   // non-finite values, negative range, no form
+  std::uint64_t plots_rejected_clutter = 0;
+};
+
+struct ScanResult {
+  bool accepted = false;
+  std::string rejection;  // why the batch was skipped
+  TrackFrame frame;       // valid when accepted
+  ScanReport report;
+};
+
+class Pipeline {
+ public:
+  static Expected<Pipeline> create(const config::TrackingProfile& profile);
+
+  /// Processes one batch; never throws, whatever the input.
+  const ScanResult& process(const PlotScan& scan);
+
+  const PipelineCounters& counters() const { return counters_; }
+  const config::TrackingProfile& profile() const { return profile_; }
+
+ private:
+  explicit Pipeline(const config::TrackingProfile& profile) : profile_(profile) {}
+  std::optional<std::string> check_order(const PlotScan& scan) const;
+  void drop_invalid_plots(const PlotScan& scan);
+
+  config::TrackingProfile profile_;
+  std::optional<PointTracker> tracker_;  // created with the first batch (its dimension)
+  struct SensorClock {
+    std::uint64_t scan = 0;
+    double time = 0.0;
+  };
+  std::map<std::uint32_t, SensorClock> sensors_;
+  PipelineCounters counters_;
+  PlotScan clean_;  // the batch without its invalid plots (reused)
+  ScanResult result_;
+};
+
+/// The tracker dimension for a profile and the first batch: the profile's, or (auto) 3 when
+/// the plots carry height (elevation or z), else 2.
+int tracker_dimension(const config::TrackingProfile& profile, const PlotScan& first);
+
+/// Why a plot cannot be used (non-finite value, negative range, neither or both forms), if so.
+std::optional<std::string> invalid_plot_reason(const Plot& plot);
+
+}  // namespace skytrack

@@ -1,0 +1,220 @@
+// IMM filter (Blom & Bar-Shalom 1988) as paper 003 §3.1 writes it: mixing eq. 1-2, per-mode
+// filtering, mode probabilities eq. 3-5 (extended to association weights as derived in
+// imm_filter.hpp), combination eq. 6-7; with the JPDA marginals of eq. 8-10 as weights.
+#include "skytrack/filter/imm_filter.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "pda_detail.hpp"
+
+namespace skytrack {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// sum_i w_i (P_i + (x_i - x)(x_i - x)') with x = sum_i w_i x_i, the weights summing to 1.
+template <class WeightAt>
+Gaussian moment_match(const std::vector<Gaussian>& parts, const WeightAt& weight) noexcept {
+  Gaussian out;
+  out.mean = StateVec::Zero(parts.front().mean.size());
+  for (std::size_t i = 0; i < parts.size(); ++i) out.mean += weight(i) * parts[i].mean;
+  out.covariance = StateMat::Zero(out.mean.size(), out.mean.size());
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const double w = weight(i);
+    if (w == 0.0) continue;
+    const StateVec dx = parts[i].mean - out.mean;
+    out.covariance += w * parts[i].covariance;
+    out.covariance.noalias() += w * (dx * dx.transpose());
+  }
+  return out;
+}
+
+/// Mode j's innovation of a hypothesis, or a failed one when the hypothesis lacks the mode.
+const Innovation& innovation_of(const PlotHypothesis& hypothesis, int j, int modes) noexcept {
+  static const Innovation kMissing;  // ok = false
+  return static_cast<int>(hypothesis.per_mode.size()) == modes ? hypothesis.per_mode[j] : kMissing;
+}
+
+/// A track's association weights: the given ones normalised to sum to 1 with beta_miss, or,
+/// when they are unusable (sum <= 0 or not finite), the isolated-track PDA weights.
+class AssociationWeights {
+ public:
+  AssociationWeights(std::span<const PlotHypothesis> hypotheses, std::span<const double> beta_plots,
+                     double beta_miss, double pd, double pg, double clutter_density) noexcept
+      : hypotheses_(hypotheses), beta_plots_(beta_plots) {
+    const std::size_t count = std::min(hypotheses.size(), beta_plots.size());
+    double sum_likelihood = 0.0;
+    total_ = std::max(beta_miss, 0.0);
+    for (std::size_t i = 0; i < count; ++i) {
+      total_ += std::max(beta_plots[i], 0.0);
+      if (hypotheses[i].usable) sum_likelihood += hypotheses[i].likelihood;
+    }
+    given_ = total_ > 0.0 && std::isfinite(total_);
+    fallback_ = filter_detail::pda_scale(sum_likelihood, pd, pg, clutter_density);
+    miss = given_ ? std::max(beta_miss, 0.0) / total_ : fallback_.miss;
+  }
+  double operator()(std::size_t i) const noexcept {
+    if (given_) return std::max(beta_plots_[i], 0.0) / total_;
+    return hypotheses_[i].usable ? fallback_.per_likelihood * hypotheses_[i].likelihood : 0.0;
+  }
+  double miss = 1.0;
+
+ private:
+  std::span<const PlotHypothesis> hypotheses_;
+  std::span<const double> beta_plots_;
+  double total_ = 0.0;
+  bool given_ = false;
+  filter_detail::PdaScale fallback_;
+};
+
+}  // namespace
+
+ImmFilter::ImmFilter(std::vector<AnyMotionModel> models, std::vector<std::string> names,
+                     Eigen::MatrixXd transition, StateLayout layout,
+                     config::MeasurementSpec measurement)
+    : models_(std::move(models)),
+      names_(std::move(names)),
+      transition_(std::move(transition)),
+      layout_(layout),
+      measurement_(std::move(measurement)) {
+  assert(!models_.empty() && models_.size() <= kMaxImmModes);
+  assert(names_.size() == models_.size());
+  assert(transition_.rows() == mode_count() && transition_.cols() == mode_count());
+}
+
+ImmEstimate ImmFilter::initial(const Gaussian& state, const Eigen::VectorXd& probabilities,
+                               double time) const {
+  ImmEstimate out;
+  out.modes.assign(models_.size(), state);
+  out.time = time;
+  const int n = mode_count();
+  const bool usable = probabilities.size() == n && probabilities.allFinite() &&
+                      (probabilities.array() >= 0.0).all() && probabilities.sum() > 0.0;
+  out.probabilities = usable ? Eigen::VectorXd(probabilities / probabilities.sum())
+                             : Eigen::VectorXd::Constant(n, 1.0 / n);
+  return out;
+}
+
+ImmEstimate ImmFilter::predict(const ImmEstimate& posterior, double time) const noexcept {
+  const int n = mode_count();
+  assert(static_cast<int>(posterior.modes.size()) == n && posterior.probabilities.size() == n);
+  ImmEstimate out;
+  out.time = time;
+  out.modes.resize(models_.size());
+  Eigen::VectorXd& c = out.probabilities;
+  c.noalias() = transition_.transpose() * posterior.probabilities;  // c_j
+  const double dt = time - posterior.time;
+  for (int j = 0; j < n; ++j) {
+    if (c[j] > 0.0) {  // eq. 1-2 with mu_i|j = p_ij mu_i / c_j
+      const Gaussian mixed = moment_match(posterior.modes, [&](std::size_t i) {
+        return transition_(static_cast<Eigen::Index>(i), j) * posterior.probabilities[i] / c[j];
+      });
+      out.modes[j] = skytrack::predict(models_[j], layout_, mixed, dt);
+    } else {  // unreachable mode: nothing to mix, carry its own estimate
+      out.modes[j] = skytrack::predict(models_[j], layout_, posterior.modes[j], dt);
+    }
+  }
+  const double sum = c.sum();
+  if (sum > 0.0 && std::isfinite(sum)) c /= sum;
+  return out;
+}
+
+PlotHypothesis ImmFilter::hypothesise(const ImmEstimate& predicted,
+                                      const PlotMeasurement& measurement) const noexcept {
+  PlotHypothesis out;
+  out.per_mode.reserve(models_.size());
+  double max_log = -kInf;
+  out.max_nis = -kInf;
+  out.min_nis = kInf;
+  for (int j = 0; j < mode_count(); ++j) {
+    out.per_mode.push_back(innovate(predicted.modes[j], layout_, measurement, measurement_));
+    const Innovation& innovation = out.per_mode.back();
+    if (!innovation.ok) continue;
+    out.usable = true;
+    out.max_nis = std::max(out.max_nis, innovation.nis);
+    out.min_nis = std::min(out.min_nis, innovation.nis);
+    if (predicted.probabilities[j] > 0.0) max_log = std::max(max_log, innovation.log_likelihood);
+  }
+  if (!out.usable) {
+    out.max_nis = kInf;
+    out.likelihood = 0.0;
+    out.log_likelihood = -kInf;
+    return out;
+  }
+  double scaled = 0.0;  // log-sum-exp of log c_j + log N_j
+  for (int j = 0; j < mode_count() && std::isfinite(max_log); ++j) {
+    const Innovation& innovation = out.per_mode[j];
+    if (innovation.ok && predicted.probabilities[j] > 0.0) {
+      scaled += predicted.probabilities[j] * std::exp(innovation.log_likelihood - max_log);
+    }
+  }
+  out.log_likelihood = scaled > 0.0 ? max_log + std::log(scaled) : -kInf;
+  out.likelihood = std::exp(out.log_likelihood);
+  return out;
+}
+
+ImmEstimate ImmFilter::update(const ImmEstimate& predicted,
+                              std::span<const PlotHypothesis> hypotheses,
+                              std::span<const double> beta_plots, double beta_miss,
+                              double detection_probability, double gate_probability,
+                              double clutter_density) const noexcept {
+  const int n = mode_count();
+  const std::size_t count = std::min(hypotheses.size(), beta_plots.size());
+  const auto innovation_at = [&](std::size_t i, int j) -> const Innovation& {
+    return innovation_of(hypotheses[i], j, n);
+  };
+  const AssociationWeights weights(hypotheses, beta_plots, beta_miss, detection_probability,
+                                   gate_probability, clutter_density);
+  const double beta0 = weights.miss;
+  const auto beta = [&](std::size_t i) { return weights(i); };
+
+  ImmEstimate out;
+  out.time = predicted.time;
+  out.modes.resize(models_.size());
+  out.probabilities.resize(n);
+  for (int j = 0; j < n; ++j) {
+    bool failed = false;
+    double weight = beta0;  // beta_0 + sum_i beta_i N_ij / L_i
+    for (std::size_t i = 0; i < count; ++i) {
+      const Innovation& innovation = innovation_at(i, j);
+      const double b = beta(i);
+      if (b <= 0.0) continue;
+      if (!innovation.ok) {
+        failed = true;
+        continue;
+      }
+      const double log_ratio = innovation.log_likelihood - hypotheses[i].log_likelihood;
+      if (std::isfinite(log_ratio)) weight += b * std::exp(log_ratio);
+    }
+    out.probabilities[j] = predicted.probabilities[j] * weight;
+    if (failed) {
+      out.failed_modes |= 1u << j;
+      out.modes[j] = predicted.modes[j];
+      continue;
+    }
+    out.modes[j] = filter_detail::pda_mixture(
+        predicted.modes[j], count,
+        [&](std::size_t i) -> const Innovation& { return innovation_at(i, j); }, beta, beta0);
+  }
+  const double norm = out.probabilities.sum();  // eq. 4
+  if (norm > 0.0 && std::isfinite(norm)) {
+    out.probabilities /= norm;  // eq. 5
+  } else {
+    out.probabilities = predicted.probabilities;
+  }
+  return out;
+}
+
+Gaussian ImmFilter::combine(const ImmEstimate& estimate) const noexcept {
+  const double sum = estimate.probabilities.sum();
+  const double norm = sum > 0.0 && std::isfinite(sum) ? sum : 1.0;
+  return moment_match(estimate.modes, [&](std::size_t j) {  // eq. 6-7
+    return estimate.probabilities[static_cast<Eigen::Index>(j)] / norm;
+  });
+}
+
+}  // namespace skytrack

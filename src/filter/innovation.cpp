@@ -1,0 +1,106 @@
+// EKF innovation and the Joseph-form Kalman update (Bar-Shalom, Li & Kirubarajan 2001,
+// §10.3 and ch. 5); the Gaussian log-likelihood is paper 003 eq. 3.
+#include "skytrack/filter/innovation.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <Eigen/Cholesky>
+
+#include "innovation_detail.hpp"
+
+namespace skytrack {
+namespace filter_detail {
+
+void fail_innovation(Innovation& out) noexcept {
+  out.ok = false;
+  out.log_likelihood = -std::numeric_limits<double>::infinity();
+  out.nis = std::numeric_limits<double>::infinity();
+}
+
+void finish_innovation(const GainMat& cross, Innovation& out) noexcept {
+  if (!out.S.allFinite() || !out.residual.allFinite() || !cross.allFinite()) {
+    fail_innovation(out);
+    return;
+  }
+  const Eigen::LLT<MeasMat> llt(out.S);
+  if (llt.info() != Eigen::Success) {
+    fail_innovation(out);
+    return;
+  }
+  out.gain = llt.solve(cross.transpose()).transpose();  // K = cross S^-1, S symmetric
+  const MeasVec whitened = llt.matrixL().solve(out.residual);
+  out.nis = whitened.squaredNorm();
+  const double log_det = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+  const double m = static_cast<double>(out.residual.size());
+  out.log_likelihood = -0.5 * (m * std::log(2.0 * std::numbers::pi) + log_det + out.nis);
+  out.ok = std::isfinite(out.log_likelihood) && out.gain.allFinite();
+  if (!out.ok) fail_innovation(out);
+}
+
+}  // namespace filter_detail
+
+namespace {
+
+void innovate_ekf(const Gaussian& predicted, const StateLayout& layout,
+                  const PlotMeasurement& measurement, Innovation& out) noexcept {
+  const MeasurementModel& model = measurement.model;
+  out.H = model.jacobian(layout, predicted.mean);
+  out.residual = model.residual(measurement.z, model.measure(layout, predicted.mean));
+  out.R = model.noise();
+  GainMat cross;  // P H'
+  cross.noalias() = predicted.covariance * out.H.transpose();
+  out.S.noalias() = out.H * cross;
+  out.S += out.R;
+  filter_detail::finish_innovation(cross, out);
+}
+
+}  // namespace
+
+Innovation innovate(const Gaussian& predicted, const StateLayout& layout,
+                    const PlotMeasurement& measurement,
+                    const config::MeasurementSpec& spec) noexcept {
+  Innovation out;
+  const int n = layout.size();
+  if (predicted.mean.size() != n || predicted.covariance.rows() != n ||
+      predicted.covariance.cols() != n || measurement.model.state_dims != layout.dims ||
+      measurement.z.size() != measurement.model.size()) {
+    filter_detail::fail_innovation(out);
+    return out;
+  }
+  if (spec.update == config::MeasurementUpdate::kUnscented) {
+    filter_detail::innovate_unscented(predicted, layout, measurement, spec.unscented, out);
+  } else {
+    innovate_ekf(predicted, layout, measurement, out);
+  }
+  return out;
+}
+
+Gaussian kalman_update(const Gaussian& predicted, const Innovation& innovation) noexcept {
+  if (!innovation.ok) return predicted;
+  Gaussian out;
+  out.mean = predicted.mean;
+  out.mean.noalias() += innovation.gain * innovation.residual;
+  const int n = static_cast<int>(predicted.mean.size());
+  StateMat P;
+  if (innovation.H.rows() == 0) {  // unscented: P - K S K'
+    GainMat KS;
+    KS.noalias() = innovation.gain * innovation.S;
+    P = predicted.covariance;
+    P.noalias() -= KS * innovation.gain.transpose();
+  } else {  // Joseph: (I - K H) P (I - K H)' + K R K'
+    StateMat A = StateMat::Identity(n, n);
+    A.noalias() -= innovation.gain * innovation.H;
+    StateMat AP;
+    AP.noalias() = A * predicted.covariance;
+    P.noalias() = AP * A.transpose();
+    GainMat KR;
+    KR.noalias() = innovation.gain * innovation.R;
+    P.noalias() += KR * innovation.gain.transpose();
+  }
+  out.covariance = 0.5 * (P + P.transpose());
+  return out;
+}
+
+}  // namespace skytrack

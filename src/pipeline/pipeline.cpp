@@ -1,0 +1,106 @@
+#include "skytrack/pipeline/pipeline.hpp"
+
+#include <cmath>
+
+namespace skytrack {
+namespace {
+
+bool finite(const std::optional<double>& v) { return !v || std::isfinite(*v); }
+
+}  // namespace
+
+std::optional<std::string> invalid_plot_reason(const Plot& plot) {
+  if (!finite(plot.time) || !finite(plot.snr_db) || !finite(plot.amplitude)) {
+    return "non-finite time or strength";
+  }
+  const MeasurementSigma& s = plot.sigma;
+  for (const auto* v : {&s.range, &s.azimuth, &s.elevation, &s.range_rate, &s.x, &s.y, &s.z}) {
+    if (*v && !(std::isfinite(**v) && **v > 0.0)) return "sigma not positive and finite";
+  }
+  if (plot.form == PlotForm::kPolar) {
+    if (!std::isfinite(plot.range) || !std::isfinite(plot.azimuth) || !finite(plot.elevation) ||
+        !finite(plot.range_rate)) {
+      return "non-finite polar value";
+    }
+    if (plot.range < 0.0) return "negative range";
+  } else if (!std::isfinite(plot.x) || !std::isfinite(plot.y) || !finite(plot.z)) {
+    return "non-finite Cartesian value";
+  }
+  return std::nullopt;
+}
+
+int tracker_dimension(const config::TrackingProfile& profile, const PlotScan& first) {
+  if (profile.dimension == 2 || profile.dimension == 3) return profile.dimension;
+  for (const Plot& plot : first.plots) {
+    if (plot.elevation || plot.z) return 3;
+  }
+  return 2;
+}
+
+Expected<Pipeline> Pipeline::create(const config::TrackingProfile& profile) {
+  if (profile.mode != config::TrackingMode::kPoint) {
+    return make_error("profile '" + profile.identity.name + "': mode '" +
+                      std::string(config::to_string(profile.mode)) +
+                      "' is not implemented yet (only point)");
+  }
+  // Build one tracker now so a bad model set fails at start, not at the first batch.
+  if (auto probe = PointTracker::create(profile, 2); !probe) return unexpected(probe.error());
+  return Pipeline(profile);
+}
+
+std::optional<std::string> Pipeline::check_order(const PlotScan& scan) const {
+  if (!std::isfinite(scan.time)) return "non-finite batch time";
+  const auto it = sensors_.find(scan.sensor);
+  if (it == sensors_.end()) return std::nullopt;
+  if (scan.scan == it->second.scan) return "duplicate scan " + std::to_string(scan.scan);
+  if (scan.scan < it->second.scan) {
+    return "scan " + std::to_string(scan.scan) + " after scan " + std::to_string(it->second.scan);
+  }
+  if (scan.time < it->second.time) return "time goes backwards";
+  return std::nullopt;
+}
+
+void Pipeline::drop_invalid_plots(const PlotScan& scan) {
+  clean_.sensor = scan.sensor;
+  clean_.scan = scan.scan;
+  clean_.time = scan.time;
+  clean_.platform = scan.platform;
+  clean_.sigma = scan.sigma;
+  clean_.plots.clear();
+  for (const Plot& plot : scan.plots) {
+    if (invalid_plot_reason(plot)) {
+      ++counters_.plots_invalid;
+    } else {
+      clean_.plots.push_back(plot);
+    }
+  }
+}
+
+const ScanResult& Pipeline::process(const PlotScan& scan) {
+  result_.accepted = false;
+  result_.rejection.clear();
+  result_.report = ScanReport{};
+  if (auto reason = check_order(scan)) {
+    ++counters_.scans_rejected;
+    result_.rejection = "sensor " + std::to_string(scan.sensor) + ": " + *reason;
+    return result_;
+  }
+  if (!scan.platform.position.allFinite() || !scan.platform.velocity.allFinite() ||
+      !scan.platform.attitude.allFinite()) {
+    ++counters_.scans_rejected;
+    result_.rejection = "sensor " + std::to_string(scan.sensor) + ": non-finite platform state";
+    return result_;
+  }
+  sensors_[scan.sensor] = {scan.scan, scan.time};
+  drop_invalid_plots(scan);
+  if (!tracker_) tracker_.emplace(*PointTracker::create(profile_, tracker_dimension(profile_, clean_)));
+  tracker_->process(clean_, result_.frame, result_.report);
+  result_.report.plots_invalid += static_cast<int>(scan.plots.size() - clean_.plots.size());
+  counters_.plots_processed += scan.plots.size();
+  counters_.plots_rejected_clutter += static_cast<std::uint64_t>(result_.report.plots_rejected_clutter);
+  ++counters_.scans_processed;
+  result_.accepted = true;
+  return result_;
+}
+
+}  // namespace skytrack

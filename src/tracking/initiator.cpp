@@ -1,0 +1,154 @@
+#include "skytrack/tracking/initiator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace skytrack {
+namespace {
+
+// Largest manoeuvre a chain may show between two plots [m/s^2] (about 6 g).
+constexpr double kMaxAcceleration = 60.0;
+
+}  // namespace
+
+double position_sigma(const PlotMeasurement& plot) noexcept {
+  const MeasurementModel& m = plot.model;
+  if (m.kind == MeasurementKind::kCartesian) {
+    return m.sigma.head(m.position_components).maxCoeff();
+  }
+  return std::max(m.sigma[0], plot.z[0] * m.sigma[1]);
+}
+
+Initiator::Initiator(const config::InitiationSpec& spec, int dims) : spec_(spec), dims_(dims) {}
+
+const std::vector<Initiation>& Initiator::step(std::uint64_t scan,
+                                               const std::vector<PlotMeasurement>& plots) {
+  completed_.clear();
+  positions_.clear();
+  for (const PlotMeasurement& plot : plots) positions_.push_back(approximate_position(plot));
+  used_.assign(plots.size(), 0);
+  index_.build(positions_, dims_);
+  extend_chains(scan, plots);
+  pair_with_seeds(scan, plots);
+  for (std::size_t i = 0; i < plots.size(); ++i) {
+    if (!used_[i]) seeds_.push_back({plots[i], positions_[i], scan});
+  }
+  // Chains with M plots become tracks.
+  for (std::size_t c = 0; c < chains_.size();) {
+    Chain& chain = chains_[c];
+    if (static_cast<int>(chain.plots.size()) >= spec_.m) {
+      completed_.push_back(
+          {std::move(chain.plots), static_cast<int>(chain.last_scan - chain.first_scan + 1)});
+      chains_[c] = std::move(chains_.back());
+      chains_.pop_back();
+    } else {
+      ++c;
+    }
+  }
+  retire(scan);
+  return completed_;
+}
+
+void Initiator::extend_chains(std::uint64_t scan, const std::vector<PlotMeasurement>& plots) {
+  if (plots.empty()) return;
+  // Plots of one batch may span a whole revolution: search around the chain's prediction at
+  // the middle of the batch, widened by how far it moves in half the span.
+  double t_min = plots.front().time, t_max = t_min;
+  for (const PlotMeasurement& p : plots) {
+    t_min = std::min(t_min, p.time);
+    t_max = std::max(t_max, p.time);
+  }
+  const double t_mid = 0.5 * (t_min + t_max);
+  for (Chain& chain : chains_) {
+    if (chain.last_scan == scan) continue;
+    const double sigma_last = position_sigma(chain.plots.back());
+    const double dt_max = t_max - chain.time;
+    const double radius = 4.0 * (2.0 * sigma_last) + 0.5 * kMaxAcceleration * dt_max * dt_max +
+                          chain.velocity.norm() * 0.5 * (t_max - t_min);
+    index_.within(chain.position + chain.velocity * (t_mid - chain.time), radius, neighbours_);
+    // The nearest unused plot to the chain's constant-velocity prediction at its own time.
+    double best = std::numeric_limits<double>::infinity();
+    int best_index = -1;
+    for (const int j : neighbours_) {
+      const double dt = plots[j].time - chain.time;
+      if (used_[j] || dt <= 0.0) continue;
+      const Eigen::Vector3d expected = chain.position + chain.velocity * dt;
+      const double gate =
+          4.0 * (sigma_last + position_sigma(plots[j])) + 0.5 * kMaxAcceleration * dt * dt;
+      const double d = (positions_[j] - expected).head(dims_).norm();
+      if (d < gate && d < best) {
+        best = d;
+        best_index = j;
+      }
+    }
+    if (best_index < 0) continue;
+    const PlotMeasurement& plot = plots[best_index];
+    used_[best_index] = 1;
+    chain.velocity = (positions_[best_index] - chain.position) / (plot.time - chain.time);
+    chain.position = positions_[best_index];
+    chain.time = plot.time;
+    chain.last_scan = scan;
+    chain.plots.push_back(plot);
+  }
+}
+
+void Initiator::pair_with_seeds(std::uint64_t scan, const std::vector<PlotMeasurement>& plots) {
+  if (seeds_.empty()) return;
+  // Search the seeds around each new plot: index the seeds once.
+  std::vector<Eigen::Vector3d> seed_positions;
+  seed_positions.reserve(seeds_.size());
+  double oldest = std::numeric_limits<double>::infinity();
+  for (const Seed& seed : seeds_) {
+    seed_positions.push_back(seed.position);
+    oldest = std::min(oldest, seed.plot.time);
+  }
+  PlotIndex seed_index;
+  seed_index.build(seed_positions, dims_);
+  for (std::size_t i = 0; i < plots.size(); ++i) {
+    if (used_[i]) continue;
+    const double reach = spec_.max_speed * (plots[i].time - oldest) +
+                         4.0 * position_sigma(plots[i]);
+    seed_index.within(positions_[i], reach, neighbours_);
+    // The seed whose implied speed is plausible and whose distance is smallest.
+    int best = -1;
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (const int s : neighbours_) {
+      const Seed& seed = seeds_[s];
+      const double dt = plots[i].time - seed.plot.time;
+      if (dt <= 0.0 || seed.scan == scan) continue;
+      const double distance = (positions_[i] - seed.position).head(dims_).norm();
+      const double slack = 3.0 * (position_sigma(plots[i]) + position_sigma(seed.plot));
+      const double speed_low = (distance - slack) / dt, speed_high = (distance + slack) / dt;
+      if (speed_high < spec_.min_speed || speed_low > spec_.max_speed) continue;
+      if (distance < best_distance) {
+        best_distance = distance;
+        best = s;
+      }
+    }
+    if (best < 0) continue;
+    const Seed& seed = seeds_[best];
+    Chain chain;
+    chain.plots = {seed.plot, plots[i]};
+    chain.position = positions_[i];
+    chain.velocity = (positions_[i] - seed.position) / (plots[i].time - seed.plot.time);
+    chain.time = plots[i].time;
+    chain.first_scan = seed.scan;
+    chain.last_scan = scan;
+    chains_.push_back(std::move(chain));
+    used_[i] = 1;
+  }
+}
+
+void Initiator::retire(std::uint64_t scan) {
+  // A seed or chain that can no longer collect M plots within N scans is dropped.
+  const auto window = static_cast<std::uint64_t>(std::max(1, spec_.n));
+  std::erase_if(seeds_, [&](const Seed& s) { return scan + 1 >= s.scan + window; });
+  std::erase_if(chains_, [&](const Chain& c) {
+    const auto remaining = static_cast<std::int64_t>(c.first_scan + window) -
+                           static_cast<std::int64_t>(scan + 1);
+    return static_cast<int>(c.plots.size()) + remaining < spec_.m;
+  });
+}
+
+}  // namespace skytrack

@@ -1,0 +1,462 @@
+#include "skytrack/tracking/point_tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <Eigen/Eigenvalues>
+
+#include "skytrack/core/chi_square.hpp"
+
+namespace skytrack {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::chrono::microseconds since(Clock::time_point start) {
+  return std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start);
+}
+
+// Height spread of a track started from plots without height [m].
+constexpr double kUnknownHeightSigma = 3000.0;
+// Acceleration spread of a new track, where the layout has acceleration states [m/s^2].
+constexpr double kInitialAccelerationSigma = 10.0;
+// Below this many plots of one form a batch says nothing about its clutter density.
+constexpr int kMinPlotsForDensity = 10;
+// Sparse clutter when nothing better is known: one false plot per (10 km)^k.
+double sparse_clutter_density(int position_dims) { return std::pow(1e-4, position_dims); }
+
+/// True when the plot measures height (elevation or z).
+bool measures_height(const PlotMeasurement& plot) { return plot.model.position_components == 3; }
+
+/// sqrt of the largest eigenvalue of the position block [m].
+double position_spread(const Gaussian& g, int dims) {
+  const Eigen::MatrixXd block = g.covariance.topLeftCorner(2 * dims, 2 * dims);
+  Eigen::Matrix3d pos = Eigen::Matrix3d::Zero();
+  for (int a = 0; a < dims; ++a) {
+    for (int b = 0; b < dims; ++b) pos(a, b) = block(2 * a, 2 * b);
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(pos, Eigen::EigenvaluesOnly);
+  return std::sqrt(std::max(0.0, eig.eigenvalues().maxCoeff()));
+}
+
+Eigen::Vector3d position_of(const StateVec& x, int dims) {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (int a = 0; a < dims; ++a) p[a] = x[StateLayout::position(a)];
+  return p;
+}
+
+Eigen::Vector3d velocity_of(const StateVec& x, int dims) {
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  for (int a = 0; a < dims; ++a) v[a] = x[StateLayout::velocity(a)];
+  return v;
+}
+
+void add_event(TrackFrame& frame, const char* type, std::int64_t track, std::string detail) {
+  frame.events.push_back({type, track, std::move(detail)});
+}
+
+}  // namespace
+
+Expected<PointTracker> PointTracker::create(const config::TrackingProfile& profile, int dims) {
+  if (profile.mode != config::TrackingMode::kPoint) {
+    return make_error("profile '" + profile.identity.name + "': mode " +
+                      std::string(config::to_string(profile.mode)) +
+                      " is not implemented by the point tracker");
+  }
+  if (dims != 2 && dims != 3) return make_error("tracker dimension must be 2 or 3");
+  auto filter = ImmFilter::from_profile(profile, dims);
+  if (!filter) return unexpected(filter.error());
+  const StateLayout layout = filter->layout();
+  return PointTracker(profile, layout, std::move(*filter));
+}
+
+PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout layout,
+                           ImmFilter filter)
+    : profile_(profile),
+      layout_(layout),
+      filter_(std::move(filter)),
+      initiator_(profile.initiation, layout.dims),
+      clutter_(profile.clutter_rejection),
+      jpda_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
+                        .k_best = profile.association.k_best}) {
+  for (int d = 1; d <= kMaxMeasurementDim; ++d) {
+    gate_threshold_[d] = chi_square_quantile(profile.association.gate_probability, d);
+  }
+}
+
+void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& report) {
+  frame.sensor = scan.sensor;
+  frame.scan = scan.scan;
+  frame.time = scan.time;
+  frame.tracks.clear();
+  frame.associations.clear();
+  frame.events.clear();
+  ++batches_;
+
+  auto start = Clock::now();
+  make_measurements(scan, report);
+  double t_min = scan.time, t_max = scan.time;
+  for (const PlotMeasurement& p : plots_) {
+    t_min = std::min(t_min, p.time);
+    t_max = std::max(t_max, p.time);
+  }
+  gate(scan, 0.5 * (t_min + t_max), 0.5 * (t_max - t_min));
+  report.predict = since(start);
+
+  start = Clock::now();
+  reject_clutter(report, frame);
+  associate_and_update(report, frame);
+  report.associate = since(start);
+
+  start = Clock::now();
+  initiate(scan, report, frame);
+  report_tracks(scan.time, report, frame);
+  report.manage = since(start);
+}
+
+void PointTracker::make_measurements(const PlotScan& scan, ScanReport& report) {
+  plots_.clear();
+  positions_.clear();
+  report.plots = static_cast<int>(scan.plots.size());
+  for (const Plot& plot : scan.plots) {
+    auto measurement =
+        measurement_from_plot(plot, scan, profile_.measurement.default_sigma, layout_.dims);
+    if (!measurement) {
+      ++report.plots_invalid;
+      continue;
+    }
+    positions_.push_back(approximate_position(*measurement));
+    plots_.push_back(std::move(*measurement));
+  }
+  rejected_.assign(plots_.size(), 0);
+  gated_.assign(plots_.size(), 0);
+}
+
+double PointTracker::plot_spread_at(const Eigen::Vector3d& position, const PlotScan& scan) const {
+  // Plot position spread near a track from the batch's sigmas (plot overrides are rare).
+  const config::MeasurementSigmas& d = profile_.measurement.default_sigma;
+  const MeasurementSigma& s = scan.sigma;
+  const double range = (position - scan.platform.position).norm();
+  const double polar =
+      std::max(s.range.value_or(d.range), range * s.azimuth.value_or(d.azimuth));
+  const double cartesian = std::max(s.x.value_or(d.x), s.y.value_or(d.y));
+  return std::max(polar, cartesian);
+}
+
+void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span) {
+  index_.build(positions_, layout_.dims);
+  candidates_.clear();
+  predicted_.resize(tracks_.size());
+  const double widest = gate_threshold_[kMaxMeasurementDim];
+  for (std::size_t t = 0; t < tracks_.size(); ++t) {
+    const ImmEstimate& estimate = tracks_[t].estimate;
+    const Gaussian mid =
+        filter_.combine(filter_.predict(estimate, std::max(batch_mid, estimate.time)));
+    const Eigen::Vector3d centre = position_of(mid.mean, layout_.dims);
+    // Search radius: the widest gate in the most uncertain direction, plus the motion over
+    // half the batch's time span. The exact gate test is per plot, in measurement space.
+    const double track_sigma = position_spread(mid, layout_.dims);
+    const double plot_sigma = plot_spread_at(centre, scan);
+    const double radius =
+        std::sqrt(widest * (track_sigma * track_sigma + plot_sigma * plot_sigma)) +
+        velocity_of(mid.mean, layout_.dims).norm() * half_span;
+    index_.within(centre, radius, neighbours_);
+    if (neighbours_.empty()) {
+      predicted_[t] = estimate;
+      continue;
+    }
+    // The track is updated at the time of its nearest candidate plot.
+    int nearest = neighbours_.front();
+    double best = std::numeric_limits<double>::infinity();
+    for (const int j : neighbours_) {
+      const double d = (positions_[j] - centre).squaredNorm();
+      if (d < best) {
+        best = d;
+        nearest = j;
+      }
+    }
+    predicted_[t] = filter_.predict(estimate, std::max(plots_[nearest].time, estimate.time));
+    for (const int j : neighbours_) {
+      PlotHypothesis hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
+      if (!hypothesis.usable) continue;
+      // A plot inside any mode's gate (the union of the modes' gates) is a candidate.
+      if (hypothesis.min_nis > gate_threshold_[plots_[j].model.size()]) continue;
+      gated_[j] = 1;
+      candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis)});
+    }
+  }
+}
+
+void PointTracker::reject_clutter(ScanReport& report, TrackFrame& frame) {
+  if (!profile_.clutter_rejection.enabled || plots_.empty()) return;
+  // Plots in the gate of a confirmed track are kept whatever their density.
+  std::vector<std::uint8_t> protect(plots_.size(), 0);
+  for (const Candidate& c : candidates_) {
+    const TrackStatus status = tracks_[c.track].life.status;
+    if (status == TrackStatus::kConfirmed || status == TrackStatus::kCoasting) {
+      protect[c.plot] = 1;
+    }
+  }
+  const clutter::ClutterRejectionResult& result = clutter_.apply(positions_, layout_.dims, protect);
+  for (std::size_t j = 0; j < plots_.size(); ++j) rejected_[j] = result.keep[j] ? 0 : 1;
+  std::erase_if(candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
+  report.plots_rejected_clutter = result.rejected;
+  add_event(frame, "clutter_rejected", 0,
+            std::to_string(result.rejected) + " of " + std::to_string(plots_.size()) + " plots");
+}
+
+void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
+  estimate_clutter_density();
+  const double pd = profile_.association.detection_probability;
+  const double pg = profile_.association.gate_probability;
+  // Candidates are grouped by track (they were made track by track) and clustered.
+  pairs_.clear();
+  for (const Candidate& c : candidates_) pairs_.push_back({c.track, c.plot});
+  const std::span<const Cluster> clusters = clusters_.build(
+      static_cast<int>(tracks_.size()), static_cast<int>(plots_.size()), pairs_);
+  std::vector<int> first(tracks_.size() + 1, 0);  // candidates_ range per track
+  for (const Candidate& c : candidates_) ++first[c.track + 1];
+  for (std::size_t t = 0; t < tracks_.size(); ++t) first[t + 1] += first[t];
+
+  for (const Cluster& cluster : clusters) {
+    const auto n_tracks = static_cast<Eigen::Index>(cluster.tracks.size());
+    const auto n_plots = static_cast<Eigen::Index>(cluster.plots.size());
+    if (n_plots == 0) {
+      for (const int t : cluster.tracks) update_track(t, {}, {}, 1.0, frame);
+      continue;
+    }
+    ++report.clusters;
+    report.largest_cluster = std::max(report.largest_cluster, static_cast<int>(n_tracks));
+    // Each plot's likelihood ratio against clutter in its own measurement space.
+    JpdaProblem problem;
+    problem.likelihood = Eigen::MatrixXd::Zero(n_tracks, n_plots);
+    problem.miss = Eigen::VectorXd::Constant(n_tracks, 1.0 - pd * pg);
+    problem.clutter_density = 1.0;
+    for (Eigen::Index ti = 0; ti < n_tracks; ++ti) {
+      const int t = cluster.tracks[ti];
+      for (int k = first[t]; k < first[t + 1]; ++k) {
+        const Candidate& c = candidates_[k];
+        const auto pj = std::find(cluster.plots.begin(), cluster.plots.end(), c.plot) -
+                        cluster.plots.begin();
+        problem.likelihood(ti, pj) = pd * c.hypothesis.likelihood / clutter_density(plots_[c.plot], c.plot);
+      }
+    }
+    const bool gnn = profile_.association.method == config::AssociationMethod::kGnn;
+    const JpdaResult& result = gnn ? gnn_.associate(problem) : jpda_.solve(problem);
+    if (result.approximated) {
+      ++report.approximated_clusters;
+      add_event(frame, "jpda_approximated", 0,
+                std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +
+                    std::to_string(profile_.association.k_best) + " best joint events");
+    }
+    std::vector<double> beta;
+    for (Eigen::Index ti = 0; ti < n_tracks; ++ti) {
+      const int t = cluster.tracks[ti];
+      beta.clear();
+      for (int k = first[t]; k < first[t + 1]; ++k) {
+        const auto pj = std::find(cluster.plots.begin(), cluster.plots.end(),
+                                  candidates_[k].plot) - cluster.plots.begin();
+        beta.push_back(result.beta(ti, pj + 1));
+      }
+      std::vector<int> mine(static_cast<std::size_t>(first[t + 1] - first[t]));
+      for (std::size_t k = 0; k < mine.size(); ++k) mine[k] = first[t] + static_cast<int>(k);
+      update_track(t, mine, beta, result.beta(ti, 0), frame);
+    }
+  }
+}
+
+void PointTracker::update_track(int t, std::span<const int> candidates,
+                                std::span<const double> beta_plots, double beta_miss,
+                                TrackFrame& frame) {
+  PointTrack& track = tracks_[t];
+  const double pd = profile_.association.detection_probability;
+  if (candidates.empty()) {
+    track.estimate = filter_.predict(track.estimate, std::max(frame.time, track.estimate.time));
+  } else {
+    std::vector<PlotHypothesis> hypotheses;
+    double density = 0.0;
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const Candidate& c = candidates_[candidates[k]];
+      hypotheses.push_back(c.hypothesis);
+      density += clutter_density(plots_[c.plot], c.plot) / static_cast<double>(candidates.size());
+      if (beta_plots[k] >= 1e-3) {
+        frame.associations.push_back({track.id, plots_[c.plot].plot_id, beta_plots[k]});
+      }
+    }
+    track.estimate = filter_.update(predicted_[t], hypotheses, beta_plots, beta_miss, pd,
+                                    profile_.association.gate_probability, density);
+  }
+  const double detection = 1.0 - beta_miss;
+  track.quality = 0.8 * track.quality + 0.2 * detection;
+  const double spread = position_spread(filter_.combine(track.estimate), layout_.dims);
+  const LifeChange change =
+      advance_life(track.life, detection > 0.5, spread, profile_.track_life);
+  if (change.confirmed) add_event(frame, "confirmed", track.id, "");
+  if (change.started_coasting) add_event(frame, "coasting", track.id, "");
+  if (change.deleted) add_event(frame, "deleted", track.id, "");
+}
+
+ImmEstimate PointTracker::start_estimate(const Initiation& initiation) const {
+  // Two-point start at the second plot, then IMM updates with any further plots.
+  const PlotMeasurement& a = initiation.plots[0];
+  const PlotMeasurement& b = initiation.plots[1];
+  const int dims = layout_.dims;
+  const double dt = std::max(b.time - a.time, 1e-3);
+  const Eigen::Vector3d pa = approximate_position(a), pb = approximate_position(b);
+  const double sa = position_sigma(a), sb = position_sigma(b);
+  Gaussian g;
+  g.mean = StateVec::Zero(layout_.size());
+  g.covariance = StateMat::Zero(layout_.size(), layout_.size());
+  for (int axis = 0; axis < dims; ++axis) {
+    const int p = StateLayout::position(axis), v = StateLayout::velocity(axis);
+    const bool unknown_height = axis == 2 && !(measures_height(a) && measures_height(b));
+    g.mean[p] = pb[axis];
+    g.mean[v] = unknown_height ? 0.0 : (pb[axis] - pa[axis]) / dt;
+    g.covariance(p, p) = unknown_height ? kUnknownHeightSigma * kUnknownHeightSigma : sb * sb;
+    g.covariance(v, v) = unknown_height ? 100.0 * 100.0 : (sa * sa + sb * sb) / (dt * dt);
+    g.covariance(p, v) = g.covariance(v, p) = unknown_height ? 0.0 : sb * sb / dt;
+  }
+  if (layout_.acceleration) {
+    for (int axis = 0; axis < dims; ++axis) {
+      const int i = layout_.acceleration_index(axis);
+      g.covariance(i, i) = kInitialAccelerationSigma * kInitialAccelerationSigma;
+    }
+  }
+  if (layout_.turn_rate) {
+    double sigma = 0.05;
+    for (const auto& spec : profile_.motion_models) {
+      if (spec.type == config::MotionModelType::kCoordinatedTurnEstimated) {
+        sigma = spec.initial_turn_rate_sigma;
+      }
+    }
+    g.covariance(layout_.turn_rate_index(), layout_.turn_rate_index()) = sigma * sigma;
+  }
+  const auto& probabilities = profile_.initial_mode_probabilities;
+  ImmEstimate estimate = filter_.initial(
+      g, Eigen::Map<const Eigen::VectorXd>(probabilities.data(),
+                                           static_cast<Eigen::Index>(probabilities.size())),
+      b.time);
+  const double one = 1.0;
+  for (std::size_t k = 2; k < initiation.plots.size(); ++k) {
+    const PlotMeasurement& plot = initiation.plots[k];
+    const ImmEstimate predicted = filter_.predict(estimate, std::max(plot.time, estimate.time));
+    const PlotHypothesis h = filter_.hypothesise(predicted, plot);
+    if (!h.usable) continue;
+    estimate = filter_.update(predicted, std::span(&h, 1), std::span(&one, 1), 0.0,
+                              profile_.association.detection_probability,
+                              profile_.association.gate_probability, clutter_density(plot, -1));
+  }
+  return estimate;
+}
+
+void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame) {
+  std::vector<PlotMeasurement> unused;
+  for (std::size_t j = 0; j < plots_.size(); ++j) {
+    if (!gated_[j] && !rejected_[j]) unused.push_back(plots_[j]);
+  }
+  for (const Initiation& initiation : initiator_.step(batches_, unused)) {
+    PointTrack track;
+    track.id = next_id_++;
+    track.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
+    track.estimate = start_estimate(initiation);
+    track.quality = 1.0;
+    std::string detail = "from plots";
+    for (const PlotMeasurement& p : initiation.plots) detail += " " + std::to_string(p.plot_id);
+    add_event(frame, "initiated", track.id, detail);
+    frame.associations.push_back({track.id, initiation.plots.back().plot_id, 1.0});
+    tracks_.push_back(std::move(track));
+    ++report.initiated;
+  }
+  (void)scan;
+}
+
+void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& frame) {
+  const int dims = layout_.dims;
+  const int n = 2 * dims;
+  for (const PointTrack& track : tracks_) {
+    const ImmEstimate at_time = track.estimate.time < time ? filter_.predict(track.estimate, time)
+                                                           : track.estimate;
+    const Gaussian g = filter_.combine(at_time);
+    TrackReport out;
+    out.id = track.id;
+    out.status = track.life.status;
+    out.dims = dims;
+    out.position = position_of(g.mean, dims);
+    out.velocity = velocity_of(g.mean, dims);
+    out.covariance.resize(static_cast<std::size_t>(n * n));
+    for (int r = 0; r < n; ++r) {
+      for (int c = 0; c < n; ++c) out.covariance[static_cast<std::size_t>(r * n + c)] = g.covariance(r, c);
+    }
+    const auto& names = filter_.names();
+    for (std::size_t m = 0; m < names.size(); ++m) {
+      out.modes.emplace_back(names[m], at_time.probabilities[static_cast<Eigen::Index>(m)]);
+    }
+    out.quality = track.quality;
+    frame.tracks.push_back(std::move(out));
+    switch (track.life.status) {
+      case TrackStatus::kTentative: ++report.tentative; break;
+      case TrackStatus::kConfirmed: ++report.confirmed; break;
+      case TrackStatus::kCoasting: ++report.coasting; break;
+      case TrackStatus::kDeleted: ++report.deleted; break;
+    }
+  }
+  // Deleted tracks are reported once, in the batch that deletes them.
+  std::erase_if(tracks_, [](const PointTrack& t) { return t.life.status == TrackStatus::kDeleted; });
+}
+
+double PointTracker::clutter_density(const PlotMeasurement& plot, int index) const {
+  // Clutter density in the plot's measurement space: this batch's estimate, or the profile's
+  // value (per m^k in the tracking frame) times the polar volume element.
+  if (index >= 0 && auto_density_[static_cast<std::size_t>(index)] > 0.0) {
+    return auto_density_[static_cast<std::size_t>(index)];
+  }
+  const MeasurementModel& m = plot.model;
+  double density = profile_.association.clutter_density.value_or(sparse_clutter_density(m.position_components));
+  if (m.kind == MeasurementKind::kPolar) {
+    const double r = plot.z[0];
+    density *= m.position_components == 3 ? r * r * std::cos(plot.z[2]) : r;
+  }
+  if (m.has_range_rate) density /= 2.0 * profile_.initiation.max_speed;
+  return density;
+}
+
+void PointTracker::estimate_clutter_density() {
+  // Plots of one measurement form are spread over the box they span in measurement space;
+  // the batch's clutter density is their count over its volume (targets add a few plots,
+  // which only makes it slightly conservative).
+  auto_density_.assign(plots_.size(), 0.0);
+  if (profile_.association.clutter_density) return;
+  struct Form {
+    int kind, size, count = 0;
+    MeasVec low, high;
+  };
+  std::vector<Form> forms;
+  std::vector<int> form_of(plots_.size());
+  for (std::size_t j = 0; j < plots_.size(); ++j) {
+    if (rejected_[j]) continue;
+    const PlotMeasurement& p = plots_[j];
+    const int kind = static_cast<int>(p.model.kind), size = static_cast<int>(p.z.size());
+    auto it = std::find_if(forms.begin(), forms.end(),
+                           [&](const Form& f) { return f.kind == kind && f.size == size; });
+    if (it == forms.end()) {
+      forms.push_back({kind, size, 0, p.z, p.z});
+      it = std::prev(forms.end());
+    }
+    it->low = it->low.cwiseMin(p.z);
+    it->high = it->high.cwiseMax(p.z);
+    ++it->count;
+    form_of[j] = static_cast<int>(it - forms.begin());
+  }
+  for (std::size_t j = 0; j < plots_.size(); ++j) {
+    if (rejected_[j]) continue;
+    const Form& f = forms[static_cast<std::size_t>(form_of[j])];
+    if (f.count < kMinPlotsForDensity) continue;
+    double volume = 1.0;
+    for (int i = 0; i < f.size; ++i) volume *= std::max(f.high[i] - f.low[i], 1e-6);
+    auto_density_[j] = std::max(f.count, 1) / volume;
+  }
+}
+
+}  // namespace skytrack

@@ -1,0 +1,331 @@
+#include "skytrack/filter/imm_filter.hpp"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "filter_test_support.hpp"
+#include "skytrack/filter/pda.hpp"
+
+namespace skytrack {
+namespace {
+
+ImmFilter two_cv_modes() {
+  Eigen::MatrixXd transition(2, 2);
+  transition << 0.9, 0.1, 0.2, 0.8;
+  auto filter = ImmFilter::create({ConstantVelocity{0.0, 1.0}, ConstantVelocity{1.0, 1.0}},
+                                  {"quiet", "noisy"}, transition, test::layout_2d(), {});
+  EXPECT_TRUE(filter) << filter.error().message;
+  return *filter;
+}
+
+/// The scenario of the hand computation: two CV modes (q = 0 and q = 1), mu = (0.7, 0.3).
+ImmEstimate hand_posterior() {
+  ImmEstimate posterior;
+  StateMat P1 = StateMat::Zero(4, 4), P2 = StateMat::Zero(4, 4);
+  P1.diagonal() << 4, 1, 4, 1;
+  P2.diagonal() << 9, 4, 9, 4;
+  posterior.modes = {test::gaussian({0, 10, 0, 0}, P1), test::gaussian({2, 12, 1, -1}, P2)};
+  posterior.probabilities = Eigen::Vector2d(0.7, 0.3);
+  posterior.time = 0.0;
+  return posterior;
+}
+
+TEST(ImmFilter, OneStepMatchesHandComputation) {
+  // GIVEN p = [0.9 0.1; 0.2 0.8], mu = (0.7, 0.3), state [x vx y vy]
+  //   mode 1 (CV, q = 0): (0, 10, 0, 0),  P = diag(4, 1, 4, 1)
+  //   mode 2 (CV, q = 1): (2, 12, 1, -1), P = diag(9, 4, 9, 4)
+  //   one plot at t = 1: (13, 0.5), sigma 2 (R = 4 I), beta = 1
+  // By hand (4x4 arithmetic written out independently of the library):
+  // eq. 1-2: c = (0.69, 0.31); mu_1|1 = 0.63/0.69 = 0.9130434782608696,
+  //   mu_2|1 = 0.06/0.69 = 0.08695652173913043, mu_1|2 = 0.07/0.31 = 0.2258064516129032,
+  //   mu_2|2 = 0.24/0.31 = 0.7741935483870968
+  //   mode 1 mixed: x0 = (0.17391304347826086, 10.17391304347826, 0.08695652173913043,
+  //     -0.08695652173913043), P0(0,0) = 4.752362948960303, P0(0,2) = 0.15879017013232516
+  //     (the spread of the means couples x and y)
+  //   mode 2 mixed: x0 = (1.5483870967741935, 11.548387096774192, 0.7741935483870968,
+  //     -0.7741935483870968), P0(0,0) = 8.570239334027056
+  // prediction (F = [1 1; 0 1] per axis, Q = q [1/3 1/2; 1/2 1]):
+  //   mode 1: x- = (10.347826086956522, 10.17391304347826, 0, -0.08695652173913043),
+  //     S = diag(10.965973534971646, 9.695652173913043), nu = (2.6521739130434785, 0.5)
+  //   mode 2: x- = (13.096774193548386, 11.548387096774192, 0, -0.7741935483870968),
+  //     S = diag(18.32396808879639, 15.526881720430106), nu = (-0.0967741935483861, 0.5)
+  // eq. 3: Lambda = (0.011056604159207898, 0.00935752405859496)
+  // eq. 4-5: mu = (0.7245144400097432, 0.2754855599902569)
+  // mode posteriors: x1 = (12.032580589553525, 10.632477159110497, 0.2937219730941704,
+  //   -0.09874244660152147), x2 = (13.021125160899523, 11.520812826531383,
+  //   0.371191135734072, -0.6474049242962108)
+  // eq. 6-7: x = (12.304910344366107, 10.87720080790926, 0.31506360874600003,
+  //   -0.2498910365148848),
+  //   P = [2.897390808044036  0.9903333858194716  0.01528519566289814  -0.23423598907027954
+  //        .                  2.0372166185490013  0.013735733202571935 -0.21397383453017826
+  //        .                  .                   2.5217067231990185    0.639682281561935
+  //        .                  .                   .                     1.878024333589953]
+  const ImmFilter filter = two_cv_modes();
+  // WHEN predicted to t = 1 and updated with the one plot, beta = 1
+  const ImmEstimate predicted = filter.predict(hand_posterior(), 1.0);
+  PlotMeasurement plot = test::cartesian_xy(13.0, 0.5, 2.0);
+  plot.time = 1.0;
+  const std::array<PlotHypothesis, 1> hypotheses = {filter.hypothesise(predicted, plot)};
+  const std::array<double, 1> beta = {1.0};
+  const ImmEstimate posterior = filter.update(predicted, hypotheses, beta, 0.0, 0.9, 0.99, 1e-6);
+  const Gaussian combined = filter.combine(posterior);
+  // THEN every intermediate and final number matches to 1e-9
+  constexpr double kTol = 1e-9;
+  EXPECT_NEAR(predicted.probabilities[0], 0.69, kTol);
+  EXPECT_NEAR(predicted.probabilities[1], 0.31, kTol);
+  const double x1[4] = {10.347826086956522, 10.17391304347826, 0.0, -0.08695652173913043};
+  const double x2[4] = {13.096774193548386, 11.548387096774192, 0.0, -0.7741935483870968};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(predicted.modes[0].mean[i], x1[i], kTol);
+    EXPECT_NEAR(predicted.modes[1].mean[i], x2[i], kTol);
+  }
+  EXPECT_NEAR(predicted.modes[0].covariance(0, 3), -0.3175803402646503, kTol);
+  EXPECT_NEAR(predicted.modes[1].covariance(0, 1), 5.221123829344433, kTol);
+  EXPECT_NEAR(hypotheses[0].per_mode[0].S(0, 0), 10.965973534971646, kTol);
+  EXPECT_NEAR(hypotheses[0].per_mode[1].S(0, 0), 18.32396808879639, kTol);
+  EXPECT_NEAR(hypotheses[0].per_mode[0].S(1, 1), 9.695652173913043, kTol);
+  EXPECT_NEAR(hypotheses[0].per_mode[1].S(1, 1), 15.526881720430106, kTol);
+  EXPECT_NEAR(hypotheses[0].per_mode[1].residual[0], -0.0967741935483861, kTol);
+  EXPECT_NEAR(std::exp(hypotheses[0].per_mode[0].log_likelihood), 0.011056604159207898, 1e-12);
+  EXPECT_NEAR(std::exp(hypotheses[0].per_mode[1].log_likelihood), 0.00935752405859496, 1e-12);
+  EXPECT_NEAR(hypotheses[0].likelihood, 0.69 * 0.011056604159207898 + 0.31 * 0.00935752405859496,
+              1e-12);
+  EXPECT_NEAR(posterior.probabilities[0], 0.7245144400097432, kTol);
+  EXPECT_NEAR(posterior.probabilities[1], 0.2754855599902569, kTol);
+  EXPECT_NEAR(posterior.modes[0].mean[3], -0.09874244660152147, kTol);
+  EXPECT_NEAR(posterior.modes[1].mean[3], -0.6474049242962108, kTol);
+  EXPECT_NEAR(posterior.modes[1].covariance(1, 1), 3.53417588302391, kTol);
+  const double x[4] = {12.304910344366107, 10.87720080790926, 0.31506360874600003,
+                       -0.2498910365148848};
+  const double P[4][4] = {
+      {2.897390808044036, 0.9903333858194716, 0.01528519566289814, -0.23423598907027954},
+      {0.9903333858194716, 2.0372166185490013, 0.013735733202571935, -0.21397383453017826},
+      {0.01528519566289814, 0.013735733202571935, 2.5217067231990185, 0.639682281561935},
+      {-0.23423598907027954, -0.21397383453017826, 0.639682281561935, 1.878024333589953}};
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(combined.mean[i], x[i], kTol) << i;
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(combined.covariance(i, j), P[i][j], kTol) << i << j;
+  }
+  EXPECT_EQ(posterior.failed_modes, 0u);
+}
+
+TEST(ImmFilter, IdenticalModesEqualASingleKalmanFilter) {
+  // GIVEN three identical CV modes with an arbitrary Markov matrix
+  Eigen::MatrixXd transition(3, 3);
+  transition << 0.5, 0.3, 0.2, 0.1, 0.6, 0.3, 0.25, 0.25, 0.5;
+  const ConstantVelocity cv{2.0, 1.0};
+  auto filter = ImmFilter::create({cv, cv, cv}, {"a", "b", "c"}, transition, test::layout_2d(), {});
+  ASSERT_TRUE(filter);
+  StateMat P0 = StateMat::Identity(4, 4) * 100.0;
+  const Gaussian start = test::gaussian({0, 50, 0, -20}, P0);
+  ImmEstimate imm = filter->initial(start, Eigen::Vector3d(0.2, 0.5, 0.3), 0.0);
+  Gaussian kf = start;
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 5.0);
+  for (int k = 1; k <= 10; ++k) {
+    // WHEN both run predict + update over ten plots
+    const double t = 2.0 * k;
+    imm = filter->predict(imm, t);
+    kf = predict(cv, test::layout_2d(), kf, 2.0);
+    PlotMeasurement plot = test::cartesian_xy(50 * t + noise(rng), -20 * t + noise(rng), 5.0);
+    const std::array<PlotHypothesis, 1> h = {filter->hypothesise(imm, plot)};
+    const std::array<double, 1> beta = {1.0};
+    imm = filter->update(imm, h, beta, 0.0, 0.9, 0.99, 1e-6);
+    kf = kalman_update(kf, innovate(kf, test::layout_2d(), plot, {}));
+    // THEN the combined IMM estimate is the KF's, and the mode probabilities stay the
+    // stationary mixing of the initial ones (no mode is favoured)
+    const Gaussian combined = filter->combine(imm);
+    EXPECT_LT((combined.mean - kf.mean).norm(), 1e-9);
+    EXPECT_LT((combined.covariance - kf.covariance).norm(), 1e-9);
+    EXPECT_NEAR(imm.probabilities.sum(), 1.0, 1e-12);
+  }
+}
+
+TEST(ImmFilter, ProbabilitiesStayNormalisedUnderClutterAndMisses) {
+  // GIVEN the default three-mode profile in 3-D and random plots around a target
+  const config::TrackingProfile profile;
+  auto filter = ImmFilter::from_profile(profile);
+  ASSERT_TRUE(filter) << filter.error().message;
+  EXPECT_EQ(filter->names(), (std::vector<std::string>{"cv", "ct_left", "ct_right"}));
+  StateMat P0 = StateMat::Identity(6, 6) * 400.0;
+  ImmEstimate imm = filter->initial(test::gaussian({0, 200, 30000, 0, 5000, 0}, P0),
+                                    Eigen::Vector3d(0.8, 0.1, 0.1), 0.0);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::uniform_int_distribution<int> plot_count(0, 3);
+  PlotScan scan;
+  for (int k = 1; k <= 15; ++k) {
+    scan.time = 2.0 * k;
+    imm = filter->predict(imm, scan.time);
+    const Gaussian predicted = filter->combine(imm);
+    std::vector<PlotHypothesis> hypotheses;
+    const int m = plot_count(rng);
+    for (int i = 0; i < m; ++i) {
+      Plot plot;
+      plot.range =
+          std::hypot(predicted.mean[0], predicted.mean[2], predicted.mean[4]) + 60 * noise(rng);
+      plot.azimuth = std::atan2(predicted.mean[0], predicted.mean[2]) + 0.005 * noise(rng);
+      plot.elevation = std::asin(predicted.mean[4] / plot.range) + 0.005 * noise(rng);
+      auto measurement = measurement_from_plot(plot, scan, profile.measurement.default_sigma, 3);
+      ASSERT_TRUE(measurement);
+      hypotheses.push_back(filter->hypothesise(imm, *measurement));
+    }
+    std::vector<double> likelihoods, beta(hypotheses.size());
+    for (const PlotHypothesis& h : hypotheses) likelihoods.push_back(h.likelihood);
+    const double beta0 = pda_weights(likelihoods, 0.9, 0.99, 1e-10, beta);
+    imm = filter->update(imm, hypotheses, beta, beta0, 0.9, 0.99, 1e-10);
+    // THEN the mode probabilities are a distribution and the estimate stays finite
+    EXPECT_NEAR(imm.probabilities.sum(), 1.0, 1e-12);
+    EXPECT_TRUE((imm.probabilities.array() >= 0.0).all());
+    EXPECT_TRUE(filter->combine(imm).covariance.allFinite());
+    EXPECT_EQ(imm.failed_modes, 0u);
+  }
+}
+
+TEST(ImmFilter, IsolatedTrackModeProbabilitiesEqualTheImmPdaForm) {
+  // GIVEN two plots, PDA weights for an isolated track with PD, PG, lambda
+  const ImmFilter filter = two_cv_modes();
+  const ImmEstimate predicted = filter.predict(hand_posterior(), 1.0);
+  const std::array<PlotHypothesis, 2> hypotheses = {
+      filter.hypothesise(predicted, test::cartesian_xy(13.0, 0.5, 2.0)),
+      filter.hypothesise(predicted, test::cartesian_xy(9.0, -2.0, 2.0))};
+  const double pd = 0.8, pg = 0.99, lambda = 2e-3;
+  const std::array<double, 2> likelihoods = {hypotheses[0].likelihood, hypotheses[1].likelihood};
+  std::array<double, 2> beta{};
+  const double beta0 = pda_weights(likelihoods, pd, pg, lambda, beta);
+  // WHEN updated with those weights
+  const ImmEstimate posterior = filter.update(predicted, hypotheses, beta, beta0, pd, pg, lambda);
+  // THEN mu_j ~ c_j Lambda_j, Lambda_j = (1 - PD PG) + (PD / lambda) sum_i N_ij (IMM-PDAF)
+  std::array<double, 2> weight{};
+  for (int j = 0; j < 2; ++j) {
+    double sum = 0.0;
+    for (const PlotHypothesis& h : hypotheses) sum += std::exp(h.per_mode[j].log_likelihood);
+    weight[j] = predicted.probabilities[j] * ((1.0 - pd * pg) + pd / lambda * sum);
+  }
+  EXPECT_NEAR(posterior.probabilities[0], weight[0] / (weight[0] + weight[1]), 1e-12);
+  // AND unusable weights (all zero) fall back to exactly this isolated-track form
+  const std::array<double, 2> zero = {0.0, 0.0};
+  const ImmEstimate fallback = filter.update(predicted, hypotheses, zero, 0.0, pd, pg, lambda);
+  EXPECT_NEAR(fallback.probabilities[0], posterior.probabilities[0], 1e-12);
+  EXPECT_LT((filter.combine(fallback).mean - filter.combine(posterior).mean).norm(), 1e-12);
+}
+
+TEST(ImmFilter, MissedDetectionKeepsPredictedProbabilities) {
+  // GIVEN no plot (beta_0 = 1); THEN mu = c and every mode keeps its prediction
+  const ImmFilter filter = two_cv_modes();
+  const ImmEstimate predicted = filter.predict(hand_posterior(), 1.0);
+  const ImmEstimate posterior = filter.update(predicted, {}, {}, 1.0, 0.9, 0.99, 1e-6);
+  EXPECT_NEAR(posterior.probabilities[0], 0.69, 1e-12);
+  EXPECT_EQ(posterior.modes[1].mean, predicted.modes[1].mean);
+}
+
+TEST(ImmFilter, NumericFailureKeepsThatModesPredictionAndIsFlagged) {
+  // GIVEN a prediction whose mode 2 covariance is broken (negative variance)
+  const ImmFilter filter = two_cv_modes();
+  ImmEstimate predicted = filter.predict(hand_posterior(), 1.0);
+  predicted.modes[1].covariance = -StateMat::Identity(4, 4) * 100.0;
+  const std::array<PlotHypothesis, 1> hypotheses = {
+      filter.hypothesise(predicted, test::cartesian_xy(13.0, 0.5, 2.0))};
+  EXPECT_TRUE(hypotheses[0].usable);
+  EXPECT_FALSE(hypotheses[0].per_mode[1].ok);
+  const std::array<double, 1> beta = {0.9};
+  // WHEN updated; THEN no throw, mode 2 is flagged and kept, probabilities still sum to 1
+  const ImmEstimate posterior = filter.update(predicted, hypotheses, beta, 0.1, 0.9, 0.99, 1e-6);
+  EXPECT_EQ(posterior.failed_modes, 2u);
+  EXPECT_TRUE(posterior.numeric_failure());
+  EXPECT_EQ(posterior.modes[1].mean, predicted.modes[1].mean);
+  EXPECT_NEAR(posterior.probabilities.sum(), 1.0, 1e-12);
+  EXPECT_GT(posterior.probabilities[0], predicted.probabilities[0]);
+}
+
+TEST(ImmFilter, TurnModeWinsInATurn) {
+  // GIVEN the default profile in 2-D, a target flying east that turns left at 3 deg/s after
+  // 60 s, plots every 2 s with 20 m noise (fixed seed)
+  config::TrackingProfile profile;
+  profile.dimension = 2;
+  auto filter = ImmFilter::from_profile(profile);
+  ASSERT_TRUE(filter);
+  const CoordinatedTurn left{0.05236, 0.0, 0.0};
+  const ConstantVelocity straight{0.0, 0.0};
+  Gaussian truth = test::gaussian({0, 200, 0, 0}, StateMat::Zero(4, 4));
+  ImmEstimate imm = filter->initial(test::gaussian({0, 200, 0, 0}, StateMat::Identity(4, 4) * 400),
+                                    Eigen::Vector3d(0.8, 0.1, 0.1), 0.0);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0.0, 20.0);
+  for (int k = 1; k <= 50; ++k) {
+    const double t = 2.0 * k;
+    truth = t <= 60.0 ? predict(straight, test::layout_2d(), truth, 2.0)
+                      : predict(left, test::layout_2d(), truth, 2.0);
+    imm = filter->predict(imm, t);
+    const std::array<PlotHypothesis, 1> h = {filter->hypothesise(
+        imm, test::cartesian_xy(truth.mean[0] + noise(rng), truth.mean[2] + noise(rng), 20.0))};
+    const std::array<double, 1> beta = {1.0};
+    imm = filter->update(imm, h, beta, 0.0, 0.9, 0.99, 1e-6);
+    // THEN the CV mode leads before the turn and the left-turn mode well into it, and the
+    // position error stays within a few plot sigmas
+    if (k == 28) {
+      EXPECT_GT(imm.probabilities[0], 0.5);
+    }
+    if (k == 50) {
+      EXPECT_GT(imm.probabilities[1], 0.5);
+    }
+    const Gaussian combined = filter->combine(imm);
+    EXPECT_LT(std::hypot(combined.mean[0] - truth.mean[0], combined.mean[2] - truth.mean[2]), 80.0)
+        << "k " << k;
+  }
+}
+
+TEST(ImmFilter, CreateRejectsInconsistentSetups) {
+  Eigen::MatrixXd good(2, 2), bad(2, 2);
+  good << 0.9, 0.1, 0.2, 0.8;
+  bad << 0.9, 0.2, 0.2, 0.8;
+  const StateLayout l2 = test::layout_2d();
+  EXPECT_FALSE(
+      ImmFilter::create({ConstantVelocity{}, ConstantVelocity{}}, {"a", "b"}, bad, l2, {}));
+  EXPECT_FALSE(ImmFilter::create({ConstantVelocity{}, ConstantVelocity{}}, {"a"}, good, l2, {}));
+  EXPECT_FALSE(ImmFilter::create({ConstantVelocity{}, Singer{}}, {"a", "b"}, good, l2, {}));
+  EXPECT_FALSE(ImmFilter::create({ConstantVelocity{}, CoordinatedTurnEstimated{}}, {"a", "b"}, good,
+                                 StateLayout{2, true, false}, {}));
+  EXPECT_FALSE(ImmFilter::create({ConstantVelocity{}, Singer{1.0, -2.0, 1.0}}, {"a", "b"}, good,
+                                 StateLayout{2, true, false}, {}));
+  EXPECT_TRUE(ImmFilter::create({ConstantVelocity{}, Singer{}}, {"a", "b"}, good,
+                                StateLayout{2, true, false}, {}));
+}
+
+TEST(ImmFilter, AugmentedModesMixAndPredict) {
+  // GIVEN CV, Singer and CT-with-rate modes sharing the full 3-D layout
+  using config::MotionModelType;
+  config::TrackingProfile profile;
+  profile.motion_models = {
+      {.name = "cv", .type = MotionModelType::kConstantVelocity},
+      {.name = "singer", .type = MotionModelType::kSinger, .accel_sigma = 10.0},
+      {.name = "ctw", .type = MotionModelType::kCoordinatedTurnEstimated, .accel_sigma = 2.0}};
+  profile.mode_transition = {{0.9, 0.05, 0.05}, {0.1, 0.85, 0.05}, {0.1, 0.05, 0.85}};
+  auto filter = ImmFilter::from_profile(profile);
+  ASSERT_TRUE(filter) << filter.error().message;
+  EXPECT_EQ(filter->layout().size(), 10);
+  StateMat P0 = StateMat::Identity(10, 10) * 100.0;
+  P0(9, 9) = 0.05 * 0.05;
+  Gaussian start;
+  start.mean = StateVec::Zero(10);
+  start.mean << 0, 200, 0, 0, 3000, 0, 0, 0, 0, 0.01;
+  start.covariance = P0;
+  ImmEstimate imm = filter->initial(start, Eigen::Vector3d(0.6, 0.2, 0.2), 0.0);
+  for (int k = 1; k <= 5; ++k) {
+    imm = filter->predict(imm, 2.0 * k);
+    // THEN the CV mode has zeroed acceleration, every mode stays finite and symmetric
+    EXPECT_EQ(imm.modes[0].mean[6], 0.0);
+    for (const Gaussian& mode : imm.modes) {
+      EXPECT_TRUE(mode.covariance.allFinite());
+      EXPECT_LT((mode.covariance - mode.covariance.transpose()).norm(), 1e-9);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skytrack
