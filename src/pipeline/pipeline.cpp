@@ -68,11 +68,7 @@ void Pipeline::drop_invalid_plots(const PlotScan& scan) {
   clean_.sigma = scan.sigma;
   clean_.plots.clear();
   for (const Plot& plot : scan.plots) {
-    if (invalid_plot_reason(plot)) {
-      ++counters_.plots_invalid;
-    } else {
-      clean_.plots.push_back(plot);
-    }
+    if (!invalid_plot_reason(plot)) clean_.plots.push_back(plot);
   }
 }
 
@@ -97,6 +93,7 @@ const ScanResult& Pipeline::process(const PlotScan& scan) {
   tracker_->process(clean_, result_.frame, result_.report);
   result_.report.plots_invalid += static_cast<int>(scan.plots.size() - clean_.plots.size());
   counters_.plots_processed += scan.plots.size();
+  counters_.plots_invalid += static_cast<std::uint64_t>(result_.report.plots_invalid);
   counters_.plots_rejected_clutter += static_cast<std::uint64_t>(result_.report.plots_rejected_clutter);
   ++counters_.scans_processed;
   result_.accepted = true;

@@ -195,7 +195,7 @@ TEST(ProfileLoader, DisabledBranchingNeedNotNameModels) {
 TEST(ProfileLoader, ManoeuvreGateMustBeTheWiderOne) {
   EXPECT_EQ(error_of("branching: {manoeuvre_gate_probability: 0.9}\n"),
             "p.yaml:3: branching.manoeuvre_gate_probability: expected >= "
-            "association.gate_probability (0.99) as the manoeuvre gate is the wider one, got 0.9");
+            "association.gate_probability (0.999) as the manoeuvre gate is the wider one, got 0.9");
 }
 
 TEST(ProfileLoader, CrossFieldOrderChecks) {

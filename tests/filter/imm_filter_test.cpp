@@ -124,6 +124,7 @@ TEST(ImmFilter, IdenticalModesEqualASingleKalmanFilter) {
   StateMat P0 = StateMat::Identity(4, 4) * 100.0;
   const Gaussian start = test::gaussian({0, 50, 0, -20}, P0);
   ImmEstimate imm = filter->initial(start, Eigen::Vector3d(0.2, 0.5, 0.3), 0.0);
+  Eigen::VectorXd markov = imm.probabilities;  // mu_k = p' mu_k-1: no mode is favoured
   Gaussian kf = start;
   std::mt19937 rng(7);
   std::normal_distribution<double> noise(0.0, 5.0);
@@ -137,11 +138,13 @@ TEST(ImmFilter, IdenticalModesEqualASingleKalmanFilter) {
     const std::array<double, 1> beta = {1.0};
     imm = filter->update(imm, h, beta, 0.0, 0.9, 0.99, 1e-6);
     kf = kalman_update(kf, innovate(kf, test::layout_2d(), plot, {}));
-    // THEN the combined IMM estimate is the KF's, and the mode probabilities stay the
-    // stationary mixing of the initial ones (no mode is favoured)
+    // THEN the combined IMM estimate is the KF's, and the mode probabilities only follow
+    // the Markov chain (equal likelihoods favour no mode)
     const Gaussian combined = filter->combine(imm);
+    markov = (transition.transpose() * markov).eval();
     EXPECT_LT((combined.mean - kf.mean).norm(), 1e-9);
     EXPECT_LT((combined.covariance - kf.covariance).norm(), 1e-9);
+    EXPECT_LT((imm.probabilities - markov).norm(), 1e-12);
     EXPECT_NEAR(imm.probabilities.sum(), 1.0, 1e-12);
   }
 }
@@ -151,7 +154,10 @@ TEST(ImmFilter, ProbabilitiesStayNormalisedUnderClutterAndMisses) {
   const config::TrackingProfile profile;
   auto filter = ImmFilter::from_profile(profile);
   ASSERT_TRUE(filter) << filter.error().message;
-  EXPECT_EQ(filter->names(), (std::vector<std::string>{"cv", "ct_left", "ct_right"}));
+  ASSERT_EQ(filter->mode_count(), static_cast<int>(profile.motion_models.size()));
+  for (int j = 0; j < filter->mode_count(); ++j) {
+    EXPECT_EQ(filter->names()[j], profile.motion_models[j].name);
+  }
   StateMat P0 = StateMat::Identity(6, 6) * 400.0;
   ImmEstimate imm = filter->initial(test::gaussian({0, 200, 30000, 0, 5000, 0}, P0),
                                     Eigen::Vector3d(0.8, 0.1, 0.1), 0.0);
@@ -244,11 +250,14 @@ TEST(ImmFilter, NumericFailureKeepsThatModesPredictionAndIsFlagged) {
 }
 
 TEST(ImmFilter, TurnModeWinsInATurn) {
-  // GIVEN the default profile in 2-D, a target flying east that turns left at 3 deg/s after
-  // 60 s, plots every 2 s with 20 m noise (fixed seed)
-  config::TrackingProfile profile;
-  profile.dimension = 2;
-  auto filter = ImmFilter::from_profile(profile);
+  // GIVEN CV + left/right turns at 3 deg/s (explicit, not the profile's defaults), and a
+  // target flying east at 200 m/s that turns left at 3 deg/s after 60 s, plots every 2 s
+  // with 20 m noise (fixed seed)
+  Eigen::MatrixXd transition(3, 3);
+  transition << 0.90, 0.05, 0.05, 0.20, 0.78, 0.02, 0.20, 0.02, 0.78;
+  auto filter = ImmFilter::create({ConstantVelocity{1.0, 1.0}, CoordinatedTurn{0.05236, 3.0, 1.0},
+                                   CoordinatedTurn{-0.05236, 3.0, 1.0}},
+                                  {"cv", "ct_left", "ct_right"}, transition, test::layout_2d(), {});
   ASSERT_TRUE(filter);
   const CoordinatedTurn left{0.05236, 0.0, 0.0};
   const ConstantVelocity straight{0.0, 0.0};
@@ -257,27 +266,28 @@ TEST(ImmFilter, TurnModeWinsInATurn) {
                                     Eigen::Vector3d(0.8, 0.1, 0.1), 0.0);
   std::mt19937 rng(3);
   std::normal_distribution<double> noise(0.0, 20.0);
+  double cv_before = 0.0, left_during = 0.0;
   for (int k = 1; k <= 50; ++k) {
+    // WHEN the IMM follows it
     const double t = 2.0 * k;
     truth = t <= 60.0 ? predict(straight, test::layout_2d(), truth, 2.0)
                       : predict(left, test::layout_2d(), truth, 2.0);
     imm = filter->predict(imm, t);
-    const std::array<PlotHypothesis, 1> h = {filter->hypothesise(
-        imm, test::cartesian_xy(truth.mean[0] + noise(rng), truth.mean[2] + noise(rng), 20.0))};
+    const double nx = noise(rng), ny = noise(rng);
+    const std::array<PlotHypothesis, 1> h = {
+        filter->hypothesise(imm, test::cartesian_xy(truth.mean[0] + nx, truth.mean[2] + ny, 20.0))};
     const std::array<double, 1> beta = {1.0};
     imm = filter->update(imm, h, beta, 0.0, 0.9, 0.99, 1e-6);
-    // THEN the CV mode leads before the turn and the left-turn mode well into it, and the
-    // position error stays within a few plot sigmas
-    if (k == 28) {
-      EXPECT_GT(imm.probabilities[0], 0.5);
-    }
-    if (k == 50) {
-      EXPECT_GT(imm.probabilities[1], 0.5);
-    }
+    if (k >= 6 && k <= 30) cv_before += imm.probabilities[0] / 25.0;
+    if (k >= 36) left_during += imm.probabilities[1] / 15.0;
+    // THEN the position error stays within a few plot sigmas throughout
     const Gaussian combined = filter->combine(imm);
-    EXPECT_LT(std::hypot(combined.mean[0] - truth.mean[0], combined.mean[2] - truth.mean[2]), 80.0)
+    EXPECT_LT(std::hypot(combined.mean[0] - truth.mean[0], combined.mean[2] - truth.mean[2]), 60.0)
         << "k " << k;
   }
+  // AND the CV mode leads on the straight leg, the left-turn mode in the turn
+  EXPECT_GT(cv_before, 0.8);
+  EXPECT_GT(left_during, 0.75);
 }
 
 TEST(ImmFilter, CreateRejectsInconsistentSetups) {

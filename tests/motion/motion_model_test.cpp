@@ -163,9 +163,11 @@ TEST(MotionModel, MakeMotionModelReadsTheParametersOfItsType) {
 
 TEST(MotionModel, LayoutForAddsOnlyTheStatesTheModelsNeed) {
   using config::MotionModelType;
-  const config::TrackingProfile defaults;  // cv, ct_left, ct_right
-  EXPECT_EQ(layout_for(defaults.motion_models, 3), make_layout(3));
-  std::vector<config::MotionModelSpec> specs = defaults.motion_models;
+  std::vector<config::MotionModelSpec> specs = {
+      {.name = "cv", .type = MotionModelType::kConstantVelocity},
+      {.name = "ct_left", .type = MotionModelType::kCoordinatedTurn, .turn_rate = 0.05},
+      {.name = "ct_right", .type = MotionModelType::kCoordinatedTurn, .turn_rate = -0.05}};
+  EXPECT_EQ(layout_for(specs, 3), make_layout(3));
   specs.push_back({.name = "singer", .type = MotionModelType::kSinger});
   EXPECT_EQ(layout_for(specs, 2), make_layout(2, true, false));
   specs.push_back({.name = "ctw", .type = MotionModelType::kCoordinatedTurnEstimated});

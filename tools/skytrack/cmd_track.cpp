@@ -54,6 +54,12 @@ class ProgressBar {
   int last_ = -1;
 };
 
+double mean(const std::vector<double>& values) {
+  double sum = 0.0;
+  for (const double v : values) sum += v;
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
+
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) return 0.0;
   const auto k = static_cast<std::size_t>(p * static_cast<double>(values.size() - 1));
@@ -128,7 +134,7 @@ int run_track(const TrackOptions& options) {
              profile.identity.name, c.scans_processed, c.scans_rejected, c.plots_processed,
              c.plots_invalid, c.plots_rejected_clutter, reader->counts().rejected_lines, initiated,
              max_tracks,
-             latency_ms.empty() ? 0.0 : wall * 1000.0 / static_cast<double>(latency_ms.size()),
+             mean(latency_ms),
              percentile(latency_ms, 0.5), percentile(latency_ms, 0.99),
              latency_ms.empty() ? 0.0 : *std::max_element(latency_ms.begin(), latency_ms.end()),
              wall, peak_rss_mib());

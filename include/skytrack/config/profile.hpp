@@ -73,7 +73,7 @@ struct MotionModelSpec {
 
 struct AssociationSpec {
   AssociationMethod method = AssociationMethod::kJpda;
-  double gate_probability = 0.99;      // P_G of the (non-manoeuvre) validation gate, in (0, 1)
+  double gate_probability = 0.999;     // P_G of the (non-manoeuvre) validation gate, in (0, 1)
   double detection_probability = 0.9;  // P_D, in (0, 1]
   // Clutter spatial density in the tracking frame [1/m^2 in 2-D, 1/m^3 in 3-D]; empty means
   // "auto": estimated from each scan.
@@ -141,21 +141,21 @@ struct TrackingProfile {
   int dimension = 0;  // 2: state [x vx y vy]; 3: adds [z vz]; 0 = auto (from the plots)
   MeasurementSpec measurement;
   std::vector<MotionModelSpec> motion_models = {
-      {.name = "cv", .type = MotionModelType::kConstantVelocity, .accel_sigma = 1.0},
+      {.name = "cv", .type = MotionModelType::kConstantVelocity, .accel_sigma = 2.0},
       {.name = "ct_left",
        .type = MotionModelType::kCoordinatedTurn,
-       .accel_sigma = 3.0,
-       .turn_rate = 0.05236},  // 3 deg/s
+       .accel_sigma = 6.0,
+       .turn_rate = 0.15},  // 8.6 deg/s: 4 g at 300 m/s
       {.name = "ct_right",
        .type = MotionModelType::kCoordinatedTurn,
-       .accel_sigma = 3.0,
-       .turn_rate = -0.05236},
+       .accel_sigma = 6.0,
+       .turn_rate = -0.15},
   };
   // Markov matrix per scan: row i gives P(mode j now | mode i before); rows sum to 1.
   std::vector<std::vector<double>> mode_transition = {
       {0.90, 0.05, 0.05},
-      {0.20, 0.78, 0.02},
-      {0.20, 0.02, 0.78},
+      {0.18, 0.80, 0.02},
+      {0.18, 0.02, 0.80},
   };
   std::vector<double> initial_mode_probabilities = {0.8, 0.1, 0.1};
   AssociationSpec association;

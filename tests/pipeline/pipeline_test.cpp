@@ -1,0 +1,101 @@
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "../tracking/tracker_test_support.hpp"
+
+namespace skytrack {
+namespace {
+
+PlotScan batch(std::uint64_t number, double time, std::vector<Plot> plots) {
+  PlotScan scan;
+  scan.sensor = 1;
+  scan.scan = number;
+  scan.time = time;
+  scan.sigma.x = 10.0;
+  scan.sigma.y = 10.0;
+  scan.plots = std::move(plots);
+  return scan;
+}
+
+Plot cartesian(std::int64_t id, double x, double y) {
+  Plot p;
+  p.id = id;
+  p.form = PlotForm::kCartesian;
+  p.x = x;
+  p.y = y;
+  return p;
+}
+
+TEST(Pipeline, RejectsOutOfOrderAndDuplicateBatchesAndCountsThem) {
+  auto pipeline = Pipeline::create(testing::test_profile());
+  ASSERT_TRUE(pipeline);
+  EXPECT_TRUE(pipeline->process(batch(5, 5.0, {})).accepted);
+  const ScanResult& duplicate = pipeline->process(batch(5, 5.0, {}));
+  EXPECT_FALSE(duplicate.accepted);
+  EXPECT_NE(duplicate.rejection.find("duplicate scan 5"), std::string::npos);
+  EXPECT_FALSE(pipeline->process(batch(4, 6.0, {})).accepted);
+  EXPECT_FALSE(pipeline->process(batch(6, 4.0, {})).accepted);  // time goes backwards
+  EXPECT_FALSE(pipeline->process(batch(7, std::nan(""), {})).accepted);
+  EXPECT_TRUE(pipeline->process(batch(8, 8.0, {})).accepted);
+  EXPECT_EQ(pipeline->counters().scans_rejected, 4u);
+  EXPECT_EQ(pipeline->counters().scans_processed, 2u);
+}
+
+TEST(Pipeline, BadPlotsAndBatchesLeaveTheTracksUntouched) {
+  // GIVEN a clean stream of one target, and the same stream with bad input mixed in
+  std::vector<PlotScan> clean;
+  for (int k = 0; k < 20; ++k) {
+    clean.push_back(batch(static_cast<std::uint64_t>(k), k, {cartesian(0, 100.0 * k, 500.0)}));
+  }
+  auto reference = Pipeline::create(testing::test_profile());
+  auto tested = Pipeline::create(testing::test_profile());
+  ASSERT_TRUE(reference && tested);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const PlotScan& scan : clean) {
+    const TrackFrame expected = reference->process(scan).frame;
+    // WHEN each good batch also carries NaN and negative-range plots, and is followed by a
+    // duplicate and an out-of-order copy
+    PlotScan dirty = scan;
+    dirty.plots.push_back(cartesian(1, nan, 0.0));
+    Plot negative;
+    negative.id = 2;
+    negative.range = -5.0;
+    negative.azimuth = 0.1;
+    dirty.plots.push_back(negative);
+    const ScanResult& result = tested->process(dirty);
+    ASSERT_TRUE(result.accepted);
+    // THEN the tracks are exactly those of the clean stream
+    EXPECT_EQ(result.frame.tracks, expected.tracks);
+    EXPECT_EQ(result.report.plots_invalid, 2);
+    EXPECT_FALSE(tested->process(dirty).accepted);
+    PlotScan older = scan;
+    older.scan = scan.scan == 0 ? 0 : scan.scan - 1;
+    EXPECT_FALSE(tested->process(older).accepted);
+  }
+  EXPECT_EQ(tested->counters().plots_invalid, 40u);
+  EXPECT_FALSE(reference->process(clean.back()).accepted);  // sanity: same rules
+}
+
+TEST(Pipeline, ChoosesTheTrackerDimensionFromThePlots) {
+  const config::TrackingProfile automatic = testing::test_profile();
+  PlotScan flat = batch(0, 0.0, {cartesian(0, 1.0, 2.0)});
+  EXPECT_EQ(tracker_dimension(automatic, flat), 2);
+  flat.plots[0].z = 100.0;
+  EXPECT_EQ(tracker_dimension(automatic, flat), 3);
+  config::TrackingProfile fixed = automatic;
+  fixed.dimension = 2;
+  EXPECT_EQ(tracker_dimension(fixed, flat), 2);
+}
+
+TEST(Pipeline, ModesOtherThanPointAreRefusedAtStart) {
+  config::TrackingProfile profile = testing::test_profile();
+  profile.mode = config::TrackingMode::kGroup;
+  const auto pipeline = Pipeline::create(profile);
+  ASSERT_FALSE(pipeline);
+  EXPECT_NE(pipeline.error().message.find("not implemented"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace skytrack

@@ -1,0 +1,189 @@
+#include <cmath>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "tracker_test_support.hpp"
+
+namespace skytrack {
+namespace {
+
+using testing::target;
+using testing::test_profile;
+using testing::track_scenario;
+
+sim::Scenario cartesian_scenario(double sigma, double clutter) {
+  sim::Scenario s;
+  s.name = "cartesian";
+  s.dimensions = 2;
+  s.duration = 60.0;
+  s.sensor.type = sim::SensorSpec::Type::kCartesian;
+  s.sensor.scan_period = 1.0;
+  s.sensor.sigma.x = sigma;
+  s.sensor.sigma.y = sigma;
+  s.clutter.mean = clutter;
+  s.clutter.region = sim::ClutterSpec::Region::kBox;
+  s.clutter.x = {-20000.0, 20000.0};
+  s.clutter.y = {-20000.0, 20000.0};
+  return s;
+}
+
+sim::Scenario radar_scenario(double clutter, sim::SensorSpec::Antenna antenna) {
+  sim::Scenario s;
+  s.name = "radar";
+  s.dimensions = 2;
+  s.duration = 200.0;
+  s.sensor.scan_period = 2.0;
+  s.sensor.antenna = antenna;
+  s.sensor.detection_probability = 0.9;
+  s.sensor.sigma.range = 20.0;
+  s.sensor.sigma.azimuth = 0.001;
+  s.sensor.max_range = 60000.0;
+  s.clutter.mean = clutter;
+  s.clutter.range = {1000.0, 60000.0};
+  return s;
+}
+
+TEST(PointTracker, OneStraightTargetGivesOneTrackWithinTheNoise) {
+  // GIVEN one 200 m/s target, Cartesian plots with 10 m noise, no clutter, Pd 1
+  sim::Scenario scenario = cartesian_scenario(10.0, 0.0);
+  scenario.targets = {target(1, {-6000.0, 2000.0, 0.0}, {200.0, 0.0, 0.0})};
+  // WHEN it is tracked
+  const auto run = track_scenario(scenario, 1, test_profile(), 100.0);
+  // THEN one track number for the whole run, confirmed after a few scans, filtered below the noise
+  std::set<std::int64_t> ids;
+  for (const auto& frame : run.frames) {
+    for (const auto& track : frame.tracks) {
+      if (is_reported_as_firm(track.status)) ids.insert(track.id);
+    }
+  }
+  EXPECT_EQ(ids.size(), 1u);
+  EXPECT_EQ(run.summary.id_changes, 0);
+  // Raw plots err by sqrt(2) x 10 = 14.1 m in 2-D; the default IMM (wide turn modes) filters
+  // at least 20% of that away, run from the first confirmed scan on.
+  EXPECT_LT(run.summary.rmse_position, 0.8 * std::sqrt(2.0) * 10.0);
+  EXPECT_GE(run.summary.continuity.at(0).frames_tracked, 55);  // of 61
+  EXPECT_LT(run.summary.gospa_false_mean, 0.01);
+}
+
+TEST(PointTracker, CrossingTargetsInClutterKeepTheirNumbers) {
+  // GIVEN two targets crossing at 30 degrees near the same time, 30 clutter plots per scan
+  sim::Scenario scenario = radar_scenario(30.0, sim::SensorSpec::Antenna::kSnapshot);
+  scenario.targets = {target(1, {-15000.0, 20000.0, 0.0}, {200.0, 0.0, 0.0}),
+                      target(2, {-15000.0, 12000.0, 0.0}, {173.2, 46.4, 0.0})};
+  const auto run = track_scenario(scenario, 2, test_profile(), 200.0);
+  // THEN both stay tracked through the crossing with their numbers
+  EXPECT_EQ(run.summary.id_changes, 0);
+  for (const auto& truth : run.summary.continuity) {
+    EXPECT_GE(truth.frames_tracked, truth.frames_present - 6) << "truth " << truth.truth_id;
+    EXPECT_EQ(truth.distinct_tracks, 1) << "truth " << truth.truth_id;
+  }
+  EXPECT_LT(run.summary.gospa_false_mean, 0.1);
+}
+
+TEST(PointTracker, FourGTurnKeepsTheTrackNumber) {
+  // GIVEN a 300 m/s target flying a 4 g turn of 180 degrees (paper 003's manoeuvre)
+  sim::Scenario scenario = radar_scenario(10.0, sim::SensorSpec::Antenna::kSnapshot);
+  sim::TargetSpec turning = target(1, {-10000.0, 30000.0, 0.0}, {300.0, 0.0, 0.0});
+  sim::SegmentSpec straight;
+  straight.duration = 40.0;
+  sim::SegmentSpec turn;
+  turn.type = sim::SegmentSpec::Type::kCoordinatedTurn;
+  turn.duration = 24.0;
+  turn.g_load = 4.0;
+  turning.trajectory.segments = {straight, turn};
+  scenario.targets = {turning};
+  const auto run = track_scenario(scenario, 3, test_profile(), 500.0);
+  EXPECT_EQ(run.summary.id_changes, 0);
+  EXPECT_EQ(run.summary.continuity.at(0).distinct_tracks, 1);
+  EXPECT_EQ(run.summary.continuity.at(0).fragmentations, 0);
+}
+
+/// Mean GOSPA of a scenario tracked with its plots' own times, or with those times erased
+/// (every plot taken as measured at its batch time).
+double gospa_with_plot_times(const sim::Scenario& scenario, std::uint64_t seed, bool use_plot_times) {
+  auto simulator = sim::Simulator::create(scenario, seed);
+  auto pipeline = Pipeline::create(test_profile());
+  metrics::ScenarioEvaluation evaluation({300.0, 2.0});
+  while (auto batch = simulator->next()) {
+    if (!use_plot_times) {
+      for (Plot& plot : batch->plots.plots) plot.time.reset();
+    }
+    evaluation.add(batch->truth, &pipeline->process(batch->plots).frame);
+  }
+  return evaluation.summary().gospa_mean;
+}
+
+TEST(PointTracker, RotatingAntennaPlotsAreUsedAtTheirOwnTime) {
+  // GIVEN a 250 m/s target seen by a snapshot and by a rotating antenna (2 s revolution),
+  // north-north-east of the radar so the beam passes it early in each sweep (plots about
+  // 1.7-2 s older than their batch time)
+  sim::Scenario snapshot = radar_scenario(0.0, sim::SensorSpec::Antenna::kSnapshot);
+  snapshot.targets = {target(1, {1000.0, 30000.0, 0.0}, {250.0, 0.0, 0.0})};
+  sim::Scenario rotating = snapshot;
+  rotating.sensor.antenna = sim::SensorSpec::Antenna::kRotating;
+  // WHEN tracked over several seeds, the rotating one with and without its plot times
+  double snap = 0.0, timed = 0.0, untimed = 0.0;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    snap += gospa_with_plot_times(snapshot, seed, true) / 4.0;
+    timed += gospa_with_plot_times(rotating, seed, true) / 4.0;
+    untimed += gospa_with_plot_times(rotating, seed, false) / 4.0;
+  }
+  RecordProperty("gospa_snapshot", std::to_string(snap));
+  RecordProperty("gospa_rotating", std::to_string(timed));
+  RecordProperty("gospa_rotating_without_plot_times", std::to_string(untimed));
+  // THEN using plot times keeps the rotating antenna close to the snapshot (the remaining gap
+  // is the age of the last plot at report time), while ignoring them costs far more
+  EXPECT_LT(timed, 1.5 * snap) << "snapshot " << snap << ", rotating " << timed;
+  EXPECT_GT(untimed, 2.0 * timed) << "without plot times " << untimed;
+}
+
+TEST(PointTracker, SameInputGivesBitIdenticalOutput) {
+  sim::Scenario scenario = radar_scenario(40.0, sim::SensorSpec::Antenna::kRotating);
+  scenario.duration = 60.0;
+  scenario.targets = {target(1, {-15000.0, 20000.0, 0.0}, {200.0, 0.0, 0.0}),
+                      target(2, {10000.0, 10000.0, 0.0}, {-100.0, 150.0, 0.0})};
+  const auto a = track_scenario(scenario, 9, test_profile(), 200.0);
+  const auto b = track_scenario(scenario, 9, test_profile(), 200.0);
+  ASSERT_EQ(a.frames.size(), b.frames.size());
+  for (std::size_t i = 0; i < a.frames.size(); ++i) EXPECT_EQ(a.frames[i], b.frames[i]);
+}
+
+TEST(PointTracker, GnnBaselineTracksTheSameSimpleScene) {
+  sim::Scenario scenario = cartesian_scenario(10.0, 5.0);
+  scenario.targets = {target(1, {-6000.0, 2000.0, 0.0}, {200.0, 0.0, 0.0})};
+  config::TrackingProfile profile = test_profile();
+  profile.association.method = config::AssociationMethod::kGnn;
+  const auto run = track_scenario(scenario, 4, profile, 100.0);
+  EXPECT_EQ(run.summary.id_changes, 0);
+  EXPECT_LT(run.summary.rmse_position, 12.0);
+  // Hard decisions: every association probability is 1.
+  for (const auto& frame : run.frames) {
+    for (const auto& a : frame.associations) EXPECT_EQ(a.probability, 1.0);
+  }
+}
+
+TEST(PointTracker, FramesCarryModesCovarianceAndEvents) {
+  sim::Scenario scenario = cartesian_scenario(10.0, 0.0);
+  scenario.targets = {target(1, {-6000.0, 2000.0, 0.0}, {200.0, 0.0, 0.0})};
+  const auto run = track_scenario(scenario, 5, test_profile(), 100.0);
+  bool initiated = false, confirmed = false;
+  for (const auto& frame : run.frames) {
+    for (const auto& e : frame.events) {
+      initiated = initiated || e.type == "initiated";
+      confirmed = confirmed || e.type == "confirmed";
+    }
+  }
+  EXPECT_TRUE(initiated);
+  EXPECT_TRUE(confirmed);
+  const TrackReport& last = run.frames.back().tracks.at(0);
+  EXPECT_EQ(last.covariance.size(), 16u);  // 2-D: [x vx y vy]
+  ASSERT_EQ(last.modes.size(), 3u);
+  double sum = 0.0;
+  for (const auto& [name, p] : last.modes) sum += p;
+  EXPECT_NEAR(sum, 1.0, 1e-9);
+  EXPECT_GT(last.modes[0].second, 0.5);  // flying straight: the cv mode dominates
+}
+
+}  // namespace
+}  // namespace skytrack

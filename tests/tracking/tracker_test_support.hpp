@@ -1,0 +1,50 @@
+#pragma once
+// Runs a simulated scenario through the Pipeline and scores it, for tracker tests.
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "skytrack/metrics/scenario_evaluation.hpp"
+#include "skytrack/pipeline/pipeline.hpp"
+#include "skytrack/sim/simulator.hpp"
+
+namespace skytrack::testing {
+
+struct TrackedRun {
+  std::vector<TrackFrame> frames;
+  metrics::EvaluationSummary summary;
+};
+
+inline config::TrackingProfile test_profile() {
+  config::TrackingProfile profile;
+  profile.identity = {"test", "1", ""};
+  return profile;
+}
+
+inline TrackedRun track_scenario(const sim::Scenario& scenario, std::uint64_t seed,
+                                 const config::TrackingProfile& profile, double cutoff) {
+  TrackedRun run;
+  auto simulator = sim::Simulator::create(scenario, seed);
+  EXPECT_TRUE(simulator) << (simulator ? "" : simulator.error().message);
+  auto pipeline = Pipeline::create(profile);
+  EXPECT_TRUE(pipeline) << (pipeline ? "" : pipeline.error().message);
+  metrics::ScenarioEvaluation evaluation({cutoff, 2.0});
+  while (auto batch = simulator->next()) {
+    const ScanResult& result = pipeline->process(batch->plots);
+    EXPECT_TRUE(result.accepted) << result.rejection;
+    run.frames.push_back(result.frame);
+    evaluation.add(batch->truth, &result.frame);
+  }
+  run.summary = evaluation.summary();
+  return run;
+}
+
+inline sim::TargetSpec target(std::int64_t id, Eigen::Vector3d position, Eigen::Vector3d velocity) {
+  sim::TargetSpec t;
+  t.id = id;
+  t.trajectory.position = position;
+  t.trajectory.velocity = velocity;
+  return t;
+}
+
+}  // namespace skytrack::testing
