@@ -18,6 +18,10 @@ std::chrono::microseconds since(Clock::time_point start) {
   return std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start);
 }
 
+// Association weights below this are not worth a Kalman update; below the second they are not
+// reported in the output's associations.
+constexpr double kNegligibleBeta = 1e-4;
+constexpr double kAssociationReportThreshold = 1e-3;
 // Height spread of a track started from plots without height [m].
 constexpr double kUnknownHeightSigma = 3000.0;
 // Acceleration spread of a new track, where the layout has acceleration states [m/s^2].
@@ -275,17 +279,24 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   if (candidates.empty()) {
     track.estimate = filter_.predict(track.estimate, std::max(frame.time, track.estimate.time));
   } else {
-    std::vector<PlotHypothesis> hypotheses;
-    double density = 0.0;
+    // Plots with a negligible weight change nothing but cost a Kalman update per mode: they
+    // are left out and the other weights renormalised.
+    hypotheses_.clear();
+    kept_beta_.clear();
+    double density = 0.0, kept = beta_miss;
     for (std::size_t k = 0; k < candidates.size(); ++k) {
-      const Candidate& c = candidates_[candidates[k]];
-      hypotheses.push_back(c.hypothesis);
+      Candidate& c = candidates_[candidates[k]];
       density += clutter_density(plots_[c.plot], c.plot) / static_cast<double>(candidates.size());
-      if (beta_plots[k] >= 1e-3) {
+      if (beta_plots[k] >= kAssociationReportThreshold) {
         frame.associations.push_back({track.id, plots_[c.plot].plot_id, beta_plots[k]});
       }
+      if (beta_plots[k] < kNegligibleBeta) continue;
+      hypotheses_.push_back(std::move(c.hypothesis));
+      kept_beta_.push_back(beta_plots[k]);
+      kept += beta_plots[k];
     }
-    track.estimate = filter_.update(predicted_[t], hypotheses, beta_plots, beta_miss, pd,
+    for (double& b : kept_beta_) b /= kept;
+    track.estimate = filter_.update(predicted_[t], hypotheses_, kept_beta_, beta_miss / kept, pd,
                                     profile_.association.gate_probability, density);
   }
   const double detection = 1.0 - beta_miss;

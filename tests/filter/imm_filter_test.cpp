@@ -150,17 +150,23 @@ TEST(ImmFilter, IdenticalModesEqualASingleKalmanFilter) {
 }
 
 TEST(ImmFilter, ProbabilitiesStayNormalisedUnderClutterAndMisses) {
-  // GIVEN the default three-mode profile in 3-D and random plots around a target
-  const config::TrackingProfile profile;
+  // GIVEN the shipped default profile (whatever its modes) in 3-D, plots around a target
+  config::TrackingProfile profile;
+  profile.dimension = 3;
   auto filter = ImmFilter::from_profile(profile);
   ASSERT_TRUE(filter) << filter.error().message;
   ASSERT_EQ(filter->mode_count(), static_cast<int>(profile.motion_models.size()));
   for (int j = 0; j < filter->mode_count(); ++j) {
     EXPECT_EQ(filter->names()[j], profile.motion_models[j].name);
   }
-  StateMat P0 = StateMat::Identity(6, 6) * 400.0;
-  ImmEstimate imm = filter->initial(test::gaussian({0, 200, 30000, 0, 5000, 0}, P0),
-                                    Eigen::Vector3d(0.8, 0.1, 0.1), 0.0);
+  const int n = filter->layout().size();
+  Gaussian start;
+  start.mean = StateVec::Zero(n);
+  start.mean.head(6) << 0, 200, 30000, 0, 5000, 0;
+  start.covariance = StateMat::Identity(n, n) * 400.0;
+  const Eigen::Map<const Eigen::VectorXd> initial(profile.initial_mode_probabilities.data(),
+                                                  profile.initial_mode_probabilities.size());
+  ImmEstimate imm = filter->initial(start, initial, 0.0);
   std::mt19937 rng(11);
   std::normal_distribution<double> noise(0.0, 1.0);
   std::uniform_int_distribution<int> plot_count(0, 3);

@@ -105,8 +105,8 @@ struct ClutterRejectionSpec {
 
 /// M-of-N plot-to-plot initiation with a speed gate.
 struct InitiationSpec {
-  int m = 2;                 // plots needed ...
-  int n = 3;                 // ... within this many consecutive scans
+  int m = 3;                 // plots needed ...
+  int n = 4;                 // ... within this many consecutive scans
   double min_speed = 10.0;   // [m/s] slower plot pairs are stationary clutter
   double max_speed = 700.0;  // [m/s] faster plot pairs cannot be one target
   bool operator==(const InitiationSpec&) const = default;

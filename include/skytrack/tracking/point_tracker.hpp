@@ -104,6 +104,8 @@ class PointTracker {
   std::vector<Candidate> candidates_;
   std::vector<int> neighbours_;
   std::vector<GatedPair> pairs_;
+  std::vector<PlotHypothesis> hypotheses_;  // one track's update
+  std::vector<double> kept_beta_;
   std::vector<double> auto_density_;  // per plot, measurement space
   PlotIndex index_;
   std::vector<std::int64_t> deleted_ids_;
