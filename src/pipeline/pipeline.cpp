@@ -5,7 +5,9 @@
 namespace skytrack {
 namespace {
 
-bool finite(const std::optional<double>& v) { return !v || std::isfinite(*v); }
+bool finite(const std::optional<double>& v) {
+  return !v || std::isfinite(*v);
+}
 
 }  // namespace
 
@@ -89,12 +91,14 @@ const ScanResult& Pipeline::process(const PlotScan& scan) {
   }
   sensors_[scan.sensor] = {scan.scan, scan.time};
   drop_invalid_plots(scan);
-  if (!tracker_) tracker_.emplace(*PointTracker::create(profile_, tracker_dimension(profile_, clean_)));
+  if (!tracker_)
+    tracker_.emplace(*PointTracker::create(profile_, tracker_dimension(profile_, clean_)));
   tracker_->process(clean_, result_.frame, result_.report);
   result_.report.plots_invalid += static_cast<int>(scan.plots.size() - clean_.plots.size());
   counters_.plots_processed += scan.plots.size();
   counters_.plots_invalid += static_cast<std::uint64_t>(result_.report.plots_invalid);
-  counters_.plots_rejected_clutter += static_cast<std::uint64_t>(result_.report.plots_rejected_clutter);
+  counters_.plots_rejected_clutter +=
+      static_cast<std::uint64_t>(result_.report.plots_rejected_clutter);
   ++counters_.scans_processed;
   result_.accepted = true;
   return result_;

@@ -136,6 +136,15 @@ PlatformState Simulator::platform_at(double time) const {
   return platform;
 }
 
+double Simulator::batch_time_of(double time) const {
+  const SensorSpec& sensor = scenario_.sensor;
+  if (sensor.antenna == SensorSpec::Antenna::kSnapshot) return time;
+  const double sector = sensor.scan_period / sensor.sectors;
+  const double since = time - scenario_.start_time;
+  // The end of the sector the plot falls in.
+  return scenario_.start_time + (std::floor(since / sector + 1e-12) + 1.0) * sector;
+}
+
 bool Simulator::alive(const Target& target, double time) const {
   return time >= target.spec.birth && time < target.spec.death;
 }
@@ -173,7 +182,9 @@ Eigen::VectorXd Simulator::bounded_noise(int dims) {
 std::optional<Plot> Simulator::measure(const Eigen::Vector3d& position,
                                        const Eigen::Vector3d& velocity, double time) {
   const SensorSpec& sensor = scenario_.sensor;
-  const PlatformState platform = platform_at(time);
+  // A plot is expressed relative to the platform state its batch carries (the signal
+  // processor compensates its own motion), while the target is seen where it is at `time`.
+  const PlatformState platform = platform_at(batch_time_of(time));
   const bool three_d = scenario_.dimensions == 3;
   const bool bounded = sensor.noise == SensorSpec::Noise::kBounded;
   std::normal_distribution<double> normal;

@@ -107,8 +107,8 @@ void Initiator::pair_with_seeds(std::uint64_t scan, const std::vector<PlotMeasur
   seed_index.build(seed_positions, dims_);
   for (std::size_t i = 0; i < plots.size(); ++i) {
     if (used_[i]) continue;
-    const double reach = spec_.max_speed * (plots[i].time - oldest) +
-                         4.0 * position_sigma(plots[i]);
+    const double reach =
+        spec_.max_speed * (plots[i].time - oldest) + 4.0 * position_sigma(plots[i]);
     seed_index.within(positions_[i], reach, neighbours_);
     // The seed whose implied speed is plausible and whose distance is smallest.
     int best = -1;
@@ -145,8 +145,8 @@ void Initiator::retire(std::uint64_t scan) {
   const auto window = static_cast<std::uint64_t>(std::max(1, spec_.n));
   std::erase_if(seeds_, [&](const Seed& s) { return scan + 1 >= s.scan + window; });
   std::erase_if(chains_, [&](const Chain& c) {
-    const auto remaining = static_cast<std::int64_t>(c.first_scan + window) -
-                           static_cast<std::int64_t>(scan + 1);
+    const auto remaining =
+        static_cast<std::int64_t>(c.first_scan + window) - static_cast<std::int64_t>(scan + 1);
     return static_cast<int>(c.plots.size()) + remaining < spec_.m;
   });
 }

@@ -29,10 +29,14 @@ constexpr double kInitialAccelerationSigma = 10.0;
 // Below this many plots of one form a batch says nothing about its clutter density.
 constexpr int kMinPlotsForDensity = 10;
 // Sparse clutter when nothing better is known: one false plot per (10 km)^k.
-double sparse_clutter_density(int position_dims) { return std::pow(1e-4, position_dims); }
+double sparse_clutter_density(int position_dims) {
+  return std::pow(1e-4, position_dims);
+}
 
 /// True when the plot measures height (elevation or z).
-bool measures_height(const PlotMeasurement& plot) { return plot.model.position_components == 3; }
+bool measures_height(const PlotMeasurement& plot) {
+  return plot.model.position_components == 3;
+}
 
 /// sqrt of the largest eigenvalue of the position block [m].
 double position_spread(const Gaussian& g, int dims) {
@@ -143,8 +147,7 @@ double PointTracker::plot_spread_at(const Eigen::Vector3d& position, const PlotS
   const config::MeasurementSigmas& d = profile_.measurement.default_sigma;
   const MeasurementSigma& s = scan.sigma;
   const double range = (position - scan.platform.position).norm();
-  const double polar =
-      std::max(s.range.value_or(d.range), range * s.azimuth.value_or(d.azimuth));
+  const double polar = std::max(s.range.value_or(d.range), range * s.azimuth.value_or(d.azimuth));
   const double cartesian = std::max(s.x.value_or(d.x), s.y.value_or(d.y));
   return std::max(polar, cartesian);
 }
@@ -218,8 +221,8 @@ void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
   // Candidates are grouped by track (they were made track by track) and clustered.
   pairs_.clear();
   for (const Candidate& c : candidates_) pairs_.push_back({c.track, c.plot});
-  const std::span<const Cluster> clusters = clusters_.build(
-      static_cast<int>(tracks_.size()), static_cast<int>(plots_.size()), pairs_);
+  const std::span<const Cluster> clusters =
+      clusters_.build(static_cast<int>(tracks_.size()), static_cast<int>(plots_.size()), pairs_);
   std::vector<int> first(tracks_.size() + 1, 0);  // candidates_ range per track
   for (const Candidate& c : candidates_) ++first[c.track + 1];
   for (std::size_t t = 0; t < tracks_.size(); ++t) first[t + 1] += first[t];
@@ -242,9 +245,10 @@ void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
       const int t = cluster.tracks[ti];
       for (int k = first[t]; k < first[t + 1]; ++k) {
         const Candidate& c = candidates_[k];
-        const auto pj = std::find(cluster.plots.begin(), cluster.plots.end(), c.plot) -
-                        cluster.plots.begin();
-        problem.likelihood(ti, pj) = pd * c.hypothesis.likelihood / clutter_density(plots_[c.plot], c.plot);
+        const auto pj =
+            std::find(cluster.plots.begin(), cluster.plots.end(), c.plot) - cluster.plots.begin();
+        problem.likelihood(ti, pj) =
+            pd * c.hypothesis.likelihood / clutter_density(plots_[c.plot], c.plot);
       }
     }
     const bool gnn = profile_.association.method == config::AssociationMethod::kGnn;
@@ -260,8 +264,8 @@ void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
       const int t = cluster.tracks[ti];
       beta.clear();
       for (int k = first[t]; k < first[t + 1]; ++k) {
-        const auto pj = std::find(cluster.plots.begin(), cluster.plots.end(),
-                                  candidates_[k].plot) - cluster.plots.begin();
+        const auto pj = std::find(cluster.plots.begin(), cluster.plots.end(), candidates_[k].plot) -
+                        cluster.plots.begin();
         beta.push_back(result.beta(ti, pj + 1));
       }
       std::vector<int> mine(static_cast<std::size_t>(first[t + 1] - first[t]));
@@ -302,8 +306,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   const double detection = 1.0 - beta_miss;
   track.quality = 0.8 * track.quality + 0.2 * detection;
   const double spread = position_spread(filter_.combine(track.estimate), layout_.dims);
-  const LifeChange change =
-      advance_life(track.life, detection > 0.5, spread, profile_.track_life);
+  const LifeChange change = advance_life(track.life, detection > 0.5, spread, profile_.track_life);
   if (change.confirmed) add_event(frame, "confirmed", track.id, "");
   if (change.started_coasting) add_event(frame, "coasting", track.id, "");
   if (change.deleted) add_event(frame, "deleted", track.id, "");
@@ -345,10 +348,11 @@ ImmEstimate PointTracker::start_estimate(const Initiation& initiation) const {
     g.covariance(layout_.turn_rate_index(), layout_.turn_rate_index()) = sigma * sigma;
   }
   const auto& probabilities = profile_.initial_mode_probabilities;
-  ImmEstimate estimate = filter_.initial(
-      g, Eigen::Map<const Eigen::VectorXd>(probabilities.data(),
-                                           static_cast<Eigen::Index>(probabilities.size())),
-      b.time);
+  ImmEstimate estimate =
+      filter_.initial(g,
+                      Eigen::Map<const Eigen::VectorXd>(
+                          probabilities.data(), static_cast<Eigen::Index>(probabilities.size())),
+                      b.time);
   const double one = 1.0;
   for (std::size_t k = 2; k < initiation.plots.size(); ++k) {
     const PlotMeasurement& plot = initiation.plots[k];
@@ -387,8 +391,8 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
   const int dims = layout_.dims;
   const int n = 2 * dims;
   for (const PointTrack& track : tracks_) {
-    const ImmEstimate at_time = track.estimate.time < time ? filter_.predict(track.estimate, time)
-                                                           : track.estimate;
+    const ImmEstimate at_time =
+        track.estimate.time < time ? filter_.predict(track.estimate, time) : track.estimate;
     const Gaussian g = filter_.combine(at_time);
     TrackReport out;
     out.id = track.id;
@@ -398,7 +402,8 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
     out.velocity = velocity_of(g.mean, dims);
     out.covariance.resize(static_cast<std::size_t>(n * n));
     for (int r = 0; r < n; ++r) {
-      for (int c = 0; c < n; ++c) out.covariance[static_cast<std::size_t>(r * n + c)] = g.covariance(r, c);
+      for (int c = 0; c < n; ++c)
+        out.covariance[static_cast<std::size_t>(r * n + c)] = g.covariance(r, c);
     }
     const auto& names = filter_.names();
     for (std::size_t m = 0; m < names.size(); ++m) {
@@ -407,14 +412,23 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
     out.quality = track.quality;
     frame.tracks.push_back(std::move(out));
     switch (track.life.status) {
-      case TrackStatus::kTentative: ++report.tentative; break;
-      case TrackStatus::kConfirmed: ++report.confirmed; break;
-      case TrackStatus::kCoasting: ++report.coasting; break;
-      case TrackStatus::kDeleted: ++report.deleted; break;
+      case TrackStatus::kTentative:
+        ++report.tentative;
+        break;
+      case TrackStatus::kConfirmed:
+        ++report.confirmed;
+        break;
+      case TrackStatus::kCoasting:
+        ++report.coasting;
+        break;
+      case TrackStatus::kDeleted:
+        ++report.deleted;
+        break;
     }
   }
   // Deleted tracks are reported once, in the batch that deletes them.
-  std::erase_if(tracks_, [](const PointTrack& t) { return t.life.status == TrackStatus::kDeleted; });
+  std::erase_if(tracks_,
+                [](const PointTrack& t) { return t.life.status == TrackStatus::kDeleted; });
 }
 
 double PointTracker::clutter_density(const PlotMeasurement& plot, int index) const {
@@ -424,7 +438,8 @@ double PointTracker::clutter_density(const PlotMeasurement& plot, int index) con
     return auto_density_[static_cast<std::size_t>(index)];
   }
   const MeasurementModel& m = plot.model;
-  double density = profile_.association.clutter_density.value_or(sparse_clutter_density(m.position_components));
+  double density =
+      profile_.association.clutter_density.value_or(sparse_clutter_density(m.position_components));
   if (m.kind == MeasurementKind::kPolar) {
     const double r = plot.z[0];
     density *= m.position_components == 3 ? r * r * std::cos(plot.z[2]) : r;

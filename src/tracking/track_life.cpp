@@ -29,8 +29,7 @@ LifeChange advance_life(TrackLife& life, bool detected, double position_sigma,
     ++life.consecutive_misses;
   }
 
-  const bool firm =
-      life.status == TrackStatus::kConfirmed || life.status == TrackStatus::kCoasting;
+  const bool firm = life.status == TrackStatus::kConfirmed || life.status == TrackStatus::kCoasting;
   if (!firm) {
     const int window = std::min(spec.confirm_n, 32);
     const std::uint32_t mask = window == 32 ? 0xFFFFFFFFu : (1u << window) - 1u;

@@ -199,6 +199,37 @@ TEST(Simulator, MovingPlatformMeasuresRelativeToItself) {
   }
 }
 
+TEST(Simulator, RotatingAirbornePlotsAreRelativeToTheirBatchPlatformState) {
+  // GIVEN an airborne radar turning at 3 deg/s with a 10 s revolution, and one target
+  Scenario scenario = base_scenario();
+  scenario.dimensions = 3;
+  scenario.duration = 60.0;
+  scenario.sensor.scan_period = 10.0;
+  scenario.sensor.antenna = SensorSpec::Antenna::kRotating;
+  scenario.sensor.sigma.range = 1e-6;
+  scenario.sensor.sigma.azimuth = 1e-9;
+  scenario.sensor.sigma.elevation = 1e-9;
+  scenario.platform.trajectory.position = {0.0, 0.0, 9000.0};
+  scenario.platform.trajectory.velocity = {180.0, 0.0, 0.0};
+  SegmentSpec turn;
+  turn.type = SegmentSpec::Type::kCoordinatedTurn;
+  turn.duration = 100.0;
+  turn.turn_rate = 0.05;
+  scenario.platform.trajectory.segments = {turn};
+  scenario.platform.attitude_follows_velocity = true;
+  TargetSpec aircraft = point_target(1, {20000.0, 30000.0, 3000.0}, {-200.0, 50.0, 0.0});
+  scenario.targets = {aircraft};
+  const Trajectory truth(aircraft.trajectory, 0.0, 3);
+  // THEN each plot, converted with the platform state its batch carries, lies where the
+  // target was at the plot's own time (the platform moves 1.8 km and turns 29 deg per sweep)
+  for (const auto& b : run(scenario, 15)) {
+    ASSERT_EQ(b.plots.plots.size(), 1u);
+    const Plot& p = b.plots.plots[0];
+    const Eigen::Vector3d at_plot_time = truth.at(*p.time).position;
+    EXPECT_NEAR((plot_position_enu(p, b.plots.platform) - at_plot_time).norm(), 0.0, 1e-3);
+  }
+}
+
 TEST(Simulator, GroupMembersEachProduceAPlotAndTruthCarriesTheShape) {
   Scenario scenario = base_scenario();
   scenario.duration = 5.0;

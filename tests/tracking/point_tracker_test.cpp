@@ -101,7 +101,8 @@ TEST(PointTracker, FourGTurnKeepsTheTrackNumber) {
 
 /// Mean GOSPA of a scenario tracked with its plots' own times, or with those times erased
 /// (every plot taken as measured at its batch time).
-double gospa_with_plot_times(const sim::Scenario& scenario, std::uint64_t seed, bool use_plot_times) {
+double gospa_with_plot_times(const sim::Scenario& scenario, std::uint64_t seed,
+                             bool use_plot_times) {
   auto simulator = sim::Simulator::create(scenario, seed);
   auto pipeline = Pipeline::create(test_profile());
   metrics::ScenarioEvaluation evaluation({300.0, 2.0});

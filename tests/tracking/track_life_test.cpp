@@ -42,7 +42,7 @@ TEST(TrackLife, ConfirmedTrackCoastsThenDiesAfterKMisses) {
   EXPECT_TRUE(advance_life(life, false, 10.0, spec()).started_coasting);
   EXPECT_EQ(life.status, TrackStatus::kCoasting);
   EXPECT_FALSE(advance_life(life, false, 10.0, spec()).started_coasting);  // only once
-  EXPECT_TRUE(advance_life(life, false, 10.0, spec()).deleted);           // third miss
+  EXPECT_TRUE(advance_life(life, false, 10.0, spec()).deleted);            // third miss
 }
 
 TEST(TrackLife, CoastingTrackRecoversOnAHit) {

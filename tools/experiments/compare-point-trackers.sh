@@ -23,8 +23,9 @@
 #   point_20_targets:default:gnn:1000
 #       ground radar, targets to 95 km: sigma 50 m range, 2 mrad (190 m cross-range) and
 #       4 mrad (380 m in height) at 95 km, about 430 m in 3-D per plot; c = 1000 m. With
-#       c = 500 m most "fragmentations" (27 of 30 on seed 1) are tracks 500-800 m off
-#       their target for a scan or two (height at 60-90 km, 5 g turns), not lost tracks.
+#       c = 500 m most "fragmentations" (117 against 26 over seeds 1-5) are tracks
+#       500-800 m off their target for a scan or two (height at 60-90 km, track starts,
+#       5 g turns), not lost tracks.
 #   airborne_30_targets:airborne:airborne_gnn:2000
 #       AEW radar, targets to 133 km: 30 m, 3 mrad (400 m) and 6 mrad (800 m in height) at
 #       133 km, about 900 m per plot, 10 s between looks; c = 2000 m.
@@ -200,5 +201,5 @@ for r in sorted(runs, key=lambda r: (order[r["scen"]], r["seed"], r["assoc"] != 
     print(f"| {r['scen']} | {r['seed']} | {r['assoc'].upper()} | {f(s.get('gospa_mean'))} "
           f"| {f(s.get('gospa_missed_mean'), 2)} | {f(s.get('gospa_false_mean'), 2)} "
           f"| {f(s.get('rmse_position'))} | {s.get('id_changes')} | {s.get('fragmentations')} "
-          f"| {f(r['p50'], 2)} / {f(r['p99'], 2)} | {f(r['wall'], 1)} |")
+          f"| {f(r['p50'], 2)} / {f(r['p99'], 2)} | {f(r['wall'], 2)} |")
 PY

@@ -106,7 +106,8 @@ int run_track(const TrackOptions& options) {
     latency_ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     if (!result.accepted) {
-      if (rejected_scans++ < 20) fmt::print(stderr, "\n{}: batch skipped: {}\n", options.plots, result.rejection);
+      if (rejected_scans++ < 20)
+        fmt::print(stderr, "\n{}: batch skipped: {}\n", options.plots, result.rejection);
       continue;
     }
     initiated += static_cast<std::size_t>(result.report.initiated);
@@ -125,19 +126,18 @@ int run_track(const TrackOptions& options) {
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const PipelineCounters& c = pipeline->counters();
-  fmt::print(stderr,
-             "skytrack track: profile '{}': {} batches ({} skipped), {} plots ({} invalid, {} "
-             "rejected as clutter), {} lines rejected\n"
-             "  tracks initiated {}, most at once {}\n"
-             "  per batch: mean {:.3f} ms, p50 {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms; wall {:.2f} s; "
-             "peak RSS {:.1f} MiB\n",
-             profile.identity.name, c.scans_processed, c.scans_rejected, c.plots_processed,
-             c.plots_invalid, c.plots_rejected_clutter, reader->counts().rejected_lines, initiated,
-             max_tracks,
-             mean(latency_ms),
-             percentile(latency_ms, 0.5), percentile(latency_ms, 0.99),
-             latency_ms.empty() ? 0.0 : *std::max_element(latency_ms.begin(), latency_ms.end()),
-             wall, peak_rss_mib());
+  fmt::print(
+      stderr,
+      "skytrack track: profile '{}': {} batches ({} skipped), {} plots ({} invalid, {} "
+      "rejected as clutter), {} lines rejected\n"
+      "  tracks initiated {}, most at once {}\n"
+      "  per batch: mean {:.3f} ms, p50 {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms; wall {:.2f} s; "
+      "peak RSS {:.1f} MiB\n",
+      profile.identity.name, c.scans_processed, c.scans_rejected, c.plots_processed,
+      c.plots_invalid, c.plots_rejected_clutter, reader->counts().rejected_lines, initiated,
+      max_tracks, mean(latency_ms), percentile(latency_ms, 0.5), percentile(latency_ms, 0.99),
+      latency_ms.empty() ? 0.0 : *std::max_element(latency_ms.begin(), latency_ms.end()), wall,
+      peak_rss_mib());
   return 0;
 }
 
@@ -145,7 +145,8 @@ int run_track(const TrackOptions& options) {
 
 void add_track_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<TrackOptions>();
-  CLI::App* cmd = app.add_subcommand("track", "Track a plot stream offline (the daemon's pipeline)");
+  CLI::App* cmd =
+      app.add_subcommand("track", "Track a plot stream offline (the daemon's pipeline)");
   cmd->add_option("--profile", options->profile,
                   "Tracking profile YAML (default: the built-in point-tracking profile)");
   cmd->add_option("--plots", options->plots, "Input plot stream (JSON Lines)")->required();

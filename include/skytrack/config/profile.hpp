@@ -79,7 +79,7 @@ struct AssociationSpec {
   // "auto": estimated from each scan.
   std::optional<double> clutter_density;
   int max_exact_cluster_size = 32;  // [tracks] exact JPDA marginals up to this cluster size
-  int k_best = 100;                // joint events from Murty's k-best above it
+  int k_best = 100;                 // joint events from Murty's k-best above it
   bool operator==(const AssociationSpec&) const = default;
 };
 

@@ -20,7 +20,7 @@ struct PipelineCounters {
   std::uint64_t scans_processed = 0;
   std::uint64_t scans_rejected = 0;  // out of order, duplicate, bad time
   std::uint64_t plots_processed = 0;
-  std::uint64_t plots_invalid = 0;   // non-finite values, negative range, no form
+  std::uint64_t plots_invalid = 0;  // non-finite values, negative range, no form
   std::uint64_t plots_rejected_clutter = 0;
 };
 

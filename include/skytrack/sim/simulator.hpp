@@ -52,6 +52,8 @@ class Simulator {
   explicit Simulator(Scenario scenario, std::uint64_t seed);
   Expected<void> build_targets();
   PlatformState platform_at(double time) const;
+  /// The reference time of the batch a plot measured at `time` belongs to.
+  double batch_time_of(double time) const;
   bool alive(const Target& target, double time) const;
   Eigen::Matrix2d shape_at(const Target& target, const KinematicState& state) const;
   template <class PositionAt>

@@ -20,7 +20,7 @@ struct TrackLife {
 
 /// What a scan's outcome did to a track's life.
 struct LifeChange {
-  bool confirmed = false;      // became confirmed this scan
+  bool confirmed = false;  // became confirmed this scan
   bool started_coasting = false;
   bool deleted = false;
 };
