@@ -202,7 +202,15 @@ std::optional<Plot> Simulator::measure(const Eigen::Vector3d& position,
     plot.form = PlotForm::kPolar;
     plot.range = std::max(0.0, polar.range + *sensor.sigma.range * unit[k++]);
     plot.azimuth = wrap_angle(polar.azimuth + *sensor.sigma.azimuth * unit[k++]);
-    if (three_d) plot.elevation = polar.elevation + *sensor.sigma.elevation * unit[k++];
+    if (three_d) {
+      // Noise past the zenith is the same direction seen from the other side.
+      double elevation = polar.elevation + *sensor.sigma.elevation * unit[k++];
+      if (std::abs(elevation) > std::numbers::pi / 2) {
+        elevation = std::copysign(std::numbers::pi, elevation) - elevation;
+        plot.azimuth = wrap_angle(plot.azimuth + std::numbers::pi);
+      }
+      plot.elevation = elevation;
+    }
     if (sensor.range_rate) {
       plot.range_rate =
           range_rate(position, velocity, platform) + *sensor.sigma.range_rate * unit[k++];
