@@ -1,8 +1,19 @@
+#include <cmath>
+
 #include "skytrack/core/plot.hpp"
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/core/truth.hpp"
 
 namespace skytrack {
+
+bool AzimuthSector::contains(double azimuth) const {
+  constexpr double kTwoPi = 2.0 * 3.141592653589793;
+  const auto clockwise = [&](double a) {  // angle from `from` to a, in [0, 2 pi)
+    double d = std::fmod(a - from, kTwoPi);
+    return d < 0.0 ? d + kTwoPi : d;
+  };
+  return clockwise(azimuth) <= clockwise(to);
+}
 
 MeasurementSigma merged(const MeasurementSigma& primary, const MeasurementSigma& fallback) {
   MeasurementSigma out = primary;

@@ -120,6 +120,9 @@ Expected<void> to_dds(const PlotScan& scan, PlotBatchSample& out) {
   copy3(scan.platform.attitude, b.platform_attitude);
   b.sigma_flags = 0;
   put_sigma(scan.sigma, b.sigma, b.sigma_flags, 0);
+  b.has_coverage = scan.coverage.has_value();
+  b.coverage[0] = scan.coverage ? scan.coverage->from : 0.0;
+  b.coverage[1] = scan.coverage ? scan.coverage->to : 0.0;
   if (!reserve_primitive(b.plot_ids, n) || !reserve_primitive(b.plot_flags, n) ||
       !reserve_primitive(b.plot_values, n * kPlotStride)) {
     return unexpected(out_of_memory("PlotBatch.plot_values"));
@@ -159,6 +162,8 @@ Expected<void> from_dds(const skytrack_dds_PlotBatch& batch, PlotScan& out) {
   out.platform.velocity = vector3(batch.platform_velocity);
   out.platform.attitude = vector3(batch.platform_attitude);
   out.sigma = get_sigma(batch.sigma, batch.sigma_flags, 0);
+  out.coverage.reset();
+  if (batch.has_coverage) out.coverage = AzimuthSector{batch.coverage[0], batch.coverage[1]};
   out.plots.clear();
   out.plots.reserve(n);
   const double* values = batch.plot_values._buffer;

@@ -209,6 +209,18 @@ std::string to_json(const PlotScan& scan) {
     out.push_back('}');
   }
   put_sigma(out, "sigma", scan.sigma, first);
+  if (scan.coverage) {
+    put_key(out, "coverage", first);
+    out.push_back('{');
+    bool inner = true;
+    put_key(out, "azimuth", inner);
+    out.push_back('[');
+    put_number(out, scan.coverage->from);
+    out.push_back(',');
+    put_number(out, scan.coverage->to);
+    out.push_back(']');
+    out.push_back('}');
+  }
   put_list(out, "plots", scan.plots, put_plot, first);
   out.push_back('}');
   return fmt::to_string(out);

@@ -152,6 +152,24 @@ Expected<ParsedPlotScan> parse_plot_scan(const element& root) {
     scan.sigma = *parsed;
   }
 
+  if (const auto coverage = field(*obj, "coverage")) {
+    auto cov = as_object(*coverage, "coverage");
+    if (!cov) return unexpected(cov.error());
+    const auto azimuth = field(*cov, "azimuth");
+    if (!azimuth) return make_error("coverage.azimuth: missing required field");
+    auto arr = as_array(*azimuth, "coverage.azimuth");
+    if (!arr || arr->size() != 2) return make_error("coverage.azimuth: expected [from, to]");
+    AzimuthSector sector;
+    double* ends[2] = {&sector.from, &sector.to};
+    int k = 0;
+    for (element item : *arr) {
+      auto v = as_finite(item, indexed("coverage.azimuth", k));
+      if (!v) return unexpected(v.error());
+      *ends[k++] = *v;
+    }
+    scan.coverage = sector;
+  }
+
   auto plots = required<simdjson::dom::array>(*obj, "", "plots", as_array);
   if (!plots) return unexpected(plots.error());
   scan.plots.reserve(plots->size());

@@ -68,6 +68,7 @@ void Pipeline::drop_invalid_plots(const PlotScan& scan) {
   clean_.time = scan.time;
   clean_.platform = scan.platform;
   clean_.sigma = scan.sigma;
+  clean_.coverage = scan.coverage;
   clean_.plots.clear();
   for (const Plot& plot : scan.plots) {
     if (!invalid_plot_reason(plot)) clean_.plots.push_back(plot);

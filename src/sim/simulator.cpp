@@ -386,8 +386,13 @@ std::optional<SimulatedBatch> Simulator::next() {
   }
   for (int s = 0; s < sensor.sectors; ++s) {
     const double time = s + 1 == sensor.sectors ? end : begin + (s + 1) * sector;
-    pending_.push_back(
-        make_batch(next_scan_++, time, std::move(by_sector[static_cast<std::size_t>(s)])));
+    SimulatedBatch batch =
+        make_batch(next_scan_++, time, std::move(by_sector[static_cast<std::size_t>(s)]));
+    if (sensor.sectors > 1) {  // the beam swept [s, s + 1) / sectors of a turn from the nose
+      batch.plots.coverage = AzimuthSector{wrap_angle(kTwoPi * s / sensor.sectors),
+                                           wrap_angle(kTwoPi * (s + 1) / sensor.sectors)};
+    }
+    pending_.push_back(std::move(batch));
   }
   return next();
 }

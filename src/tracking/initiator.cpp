@@ -22,35 +22,42 @@ double position_sigma(const PlotMeasurement& plot) noexcept {
 
 Initiator::Initiator(const config::InitiationSpec& spec, int dims) : spec_(spec), dims_(dims) {}
 
-const std::vector<Initiation>& Initiator::step(std::uint64_t scan,
-                                               const std::vector<PlotMeasurement>& plots) {
+const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
+                                               const std::vector<PlotMeasurement>& plots,
+                                               const Coverage& covered) {
   completed_.clear();
+  // This batch is a look at every seed and chain it covers.
+  for (Seed& seed : seeds_) {
+    if (seed.batch != batch && covered(seed.position)) ++seed.looks;
+  }
+  for (Chain& chain : chains_) {
+    if (covered(chain.position + chain.velocity * (time - chain.time))) ++chain.looks;
+  }
   positions_.clear();
   for (const PlotMeasurement& plot : plots) positions_.push_back(approximate_position(plot));
   used_.assign(plots.size(), 0);
   index_.build(positions_, dims_);
-  extend_chains(scan, plots);
-  pair_with_seeds(scan, plots);
+  extend_chains(batch, plots);
+  pair_with_seeds(batch, plots);
   for (std::size_t i = 0; i < plots.size(); ++i) {
-    if (!used_[i]) seeds_.push_back({plots[i], positions_[i], scan});
+    if (!used_[i]) seeds_.push_back({plots[i], positions_[i], batch, 0});
   }
   // Chains with M plots become tracks.
   for (std::size_t c = 0; c < chains_.size();) {
     Chain& chain = chains_[c];
     if (static_cast<int>(chain.plots.size()) >= spec_.m) {
-      completed_.push_back(
-          {std::move(chain.plots), static_cast<int>(chain.last_scan - chain.first_scan + 1)});
+      completed_.push_back({std::move(chain.plots), chain.looks});
       chains_[c] = std::move(chains_.back());
       chains_.pop_back();
     } else {
       ++c;
     }
   }
-  retire(scan);
+  retire();
   return completed_;
 }
 
-void Initiator::extend_chains(std::uint64_t scan, const std::vector<PlotMeasurement>& plots) {
+void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasurement>& plots) {
   if (plots.empty()) return;
   // Plots of one batch may span a whole revolution: search around the chain's prediction at
   // the middle of the batch, widened by how far it moves in half the span.
@@ -61,7 +68,7 @@ void Initiator::extend_chains(std::uint64_t scan, const std::vector<PlotMeasurem
   }
   const double t_mid = 0.5 * (t_min + t_max);
   for (Chain& chain : chains_) {
-    if (chain.last_scan == scan) continue;
+    if (chain.last_batch == batch) continue;
     const double sigma_last = position_sigma(chain.plots.back());
     const double dt_max = t_max - chain.time;
     const double radius = 4.0 * (2.0 * sigma_last) + 0.5 * kMaxAcceleration * dt_max * dt_max +
@@ -88,12 +95,12 @@ void Initiator::extend_chains(std::uint64_t scan, const std::vector<PlotMeasurem
     chain.velocity = (positions_[best_index] - chain.position) / (plot.time - chain.time);
     chain.position = positions_[best_index];
     chain.time = plot.time;
-    chain.last_scan = scan;
+    chain.last_batch = batch;
     chain.plots.push_back(plot);
   }
 }
 
-void Initiator::pair_with_seeds(std::uint64_t scan, const std::vector<PlotMeasurement>& plots) {
+void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasurement>& plots) {
   if (seeds_.empty()) return;
   // Search the seeds around each new plot: index the seeds once.
   std::vector<Eigen::Vector3d> seed_positions;
@@ -116,7 +123,7 @@ void Initiator::pair_with_seeds(std::uint64_t scan, const std::vector<PlotMeasur
     for (const int s : neighbours_) {
       const Seed& seed = seeds_[s];
       const double dt = plots[i].time - seed.plot.time;
-      if (dt <= 0.0 || seed.scan == scan) continue;
+      if (dt <= 0.0 || seed.batch == batch || seed.looks < 1) continue;
       const double distance = (positions_[i] - seed.position).head(dims_).norm();
       const double slack = 3.0 * (position_sigma(plots[i]) + position_sigma(seed.plot));
       const double speed_low = (distance - slack) / dt, speed_high = (distance + slack) / dt;
@@ -133,21 +140,19 @@ void Initiator::pair_with_seeds(std::uint64_t scan, const std::vector<PlotMeasur
     chain.position = positions_[i];
     chain.velocity = (positions_[i] - seed.position) / (plots[i].time - seed.plot.time);
     chain.time = plots[i].time;
-    chain.first_scan = seed.scan;
-    chain.last_scan = scan;
+    chain.looks = seed.looks + 1;
+    chain.last_batch = batch;
     chains_.push_back(std::move(chain));
     used_[i] = 1;
   }
 }
 
-void Initiator::retire(std::uint64_t scan) {
-  // A seed or chain that can no longer collect M plots within N scans is dropped.
-  const auto window = static_cast<std::uint64_t>(std::max(1, spec_.n));
-  std::erase_if(seeds_, [&](const Seed& s) { return scan + 1 >= s.scan + window; });
+void Initiator::retire() {
+  // A seed or chain that can no longer collect M plots within N looks is dropped.
+  const int window = std::max(1, spec_.n);
+  std::erase_if(seeds_, [&](const Seed& s) { return s.looks >= window - 1; });
   std::erase_if(chains_, [&](const Chain& c) {
-    const auto remaining =
-        static_cast<std::int64_t>(c.first_scan + window) - static_cast<std::int64_t>(scan + 1);
-    return static_cast<int>(c.plots.size()) + remaining < spec_.m;
+    return static_cast<int>(c.plots.size()) + (window - c.looks) < spec_.m;
   });
 }
 

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "skytrack/core/chi_square.hpp"
+#include "skytrack/geometry/frames.hpp"
 
 namespace skytrack {
 namespace {
@@ -152,10 +153,24 @@ double PointTracker::plot_spread_at(const Eigen::Vector3d& position, const PlotS
   return std::max(polar, cartesian);
 }
 
+bool PointTracker::covers(const PlotScan& scan, const Eigen::Vector3d& position) const {
+  return !scan.coverage || scan.coverage->contains(enu_to_polar(position, scan.platform).azimuth);
+}
+
+bool PointTracker::covers_region(const PlotScan& scan, const Eigen::Vector3d& centre,
+                                 double radius) const {
+  if (!scan.coverage) return true;
+  const PolarPoint polar = enu_to_polar(centre, scan.platform);
+  const double margin = std::atan2(radius, std::max(polar.range, radius));
+  return scan.coverage->contains(polar.azimuth - margin) ||
+         scan.coverage->contains(polar.azimuth + margin) || scan.coverage->contains(polar.azimuth);
+}
+
 void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span) {
   index_.build(positions_, layout_.dims);
   candidates_.clear();
   predicted_.resize(tracks_.size());
+  covered_.assign(tracks_.size(), 1);
   const double widest = gate_threshold_[kMaxMeasurementDim];
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
     const ImmEstimate& estimate = tracks_[t].estimate;
@@ -169,6 +184,13 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     const double radius =
         std::sqrt(widest * (track_sigma * track_sigma + plot_sigma * plot_sigma)) +
         velocity_of(mid.mean, layout_.dims).norm() * half_span;
+    // A sector batch looks at a track whose predicted position lies in the sector; one whose
+    // search region only reaches into it may take a plot from it but is not aged by it.
+    covered_[t] = covers(scan, centre) ? 1 : 0;
+    if (!covered_[t] && !covers_region(scan, centre, radius)) {
+      predicted_[t] = estimate;
+      continue;
+    }
     index_.within(centre, radius, neighbours_);
     if (neighbours_.empty()) {
       predicted_[t] = estimate;
@@ -279,6 +301,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
                                 std::span<const double> beta_plots, double beta_miss,
                                 TrackFrame& frame) {
   PointTrack& track = tracks_[t];
+  if (!covered_[t] && candidates.empty()) return;  // not looked at: neither updated nor aged
   const double pd = profile_.association.detection_probability;
   if (candidates.empty()) {
     track.estimate = filter_.predict(track.estimate, std::max(frame.time, track.estimate.time));
@@ -371,7 +394,8 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
   for (std::size_t j = 0; j < plots_.size(); ++j) {
     if (!gated_[j] && !rejected_[j]) unused.push_back(plots_[j]);
   }
-  for (const Initiation& initiation : initiator_.step(batches_, unused)) {
+  const auto covered = [&](const Eigen::Vector3d& p) { return covers(scan, p); };
+  for (const Initiation& initiation : initiator_.step(batches_, scan.time, unused, covered)) {
     PointTrack track;
     track.id = next_id_++;
     track.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);

@@ -64,6 +64,7 @@ PlotScan scan_with(std::vector<Plot> plots) {
   scan.platform.attitude = {0.1, 0.02, -0.03};
   scan.sigma.range = 15.0;
   scan.sigma.azimuth = 0.002;
+  scan.coverage = AzimuthSector{-0.5, 0.2};
   scan.plots = std::move(plots);
   return scan;
 }

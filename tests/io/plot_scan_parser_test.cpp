@@ -109,6 +109,7 @@ TEST(PlotScanWriter, RoundTripsBitExactly) {
   scan.platform.attitude = {0.1, -0.02, 0.003};
   scan.sigma.range = 15.0;
   scan.sigma.azimuth = 0.002;
+  scan.coverage = AzimuthSector{3.0, -2.9};  // a sector across +-pi
   Plot polar;
   polar.id = 4;
   polar.range = 35120.123456789;

@@ -139,6 +139,38 @@ TEST(PointTracker, RotatingAntennaPlotsAreUsedAtTheirOwnTime) {
   EXPECT_GT(untimed, 2.0 * timed) << "without plot times " << untimed;
 }
 
+TEST(PointTracker, SectorBatchesTrackLikeWholeRevolutions) {
+  // GIVEN three targets around the radar seen by a 2 s rotating antenna, reported once per
+  // revolution and, in a second run, in 36 sectors of 10 degrees
+  sim::Scenario whole = radar_scenario(10.0, sim::SensorSpec::Antenna::kRotating);
+  whole.duration = 120.0;
+  whole.targets = {target(1, {1000.0, 30000.0, 0.0}, {250.0, 0.0, 0.0}),
+                   target(2, {-25000.0, -5000.0, 0.0}, {0.0, 200.0, 0.0}),
+                   target(3, {15000.0, -20000.0, 0.0}, {-150.0, 150.0, 0.0})};
+  sim::Scenario sectors = whole;
+  sectors.sensor.sectors = 36;
+  // WHEN both are tracked, and scored at the revolution ends
+  const auto score = [](const sim::Scenario& scenario) {
+    auto simulator = sim::Simulator::create(scenario, 21);
+    auto pipeline = Pipeline::create(test_profile());
+    metrics::ScenarioEvaluation evaluation({300.0, 2.0});
+    while (auto batch = simulator->next()) {
+      const ScanResult& result = pipeline->process(batch->plots);
+      const double revolutions = batch->plots.time / scenario.sensor.scan_period;
+      if (std::abs(revolutions - std::round(revolutions)) < 1e-9) {
+        evaluation.add(batch->truth, &result.frame);
+      }
+    }
+    return evaluation.summary();
+  };
+  const metrics::EvaluationSummary w = score(whole), s = score(sectors);
+  // THEN a sector batch ages only the tracks it looked at: the targets stay tracked with
+  // their numbers, as accurately as with whole revolutions
+  EXPECT_EQ(s.id_changes, 0);
+  for (const auto& truth : s.continuity) EXPECT_EQ(truth.distinct_tracks, 1);
+  EXPECT_LT(s.gospa_mean, 1.25 * w.gospa_mean + 5.0) << "whole " << w.gospa_mean;
+}
+
 TEST(PointTracker, SameInputGivesBitIdenticalOutput) {
   sim::Scenario scenario = radar_scenario(40.0, sim::SensorSpec::Antenna::kRotating);
   scenario.duration = 60.0;

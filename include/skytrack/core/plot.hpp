@@ -55,13 +55,25 @@ struct PlatformState {
   bool operator==(const PlatformState&) const = default;
 };
 
+/// The body-frame azimuth sector a batch's sweep covered, clockwise from `from` to `to`
+/// [rad] (`to` < `from` when it crosses +-pi). A batch without one covers all directions.
+struct AzimuthSector {
+  double from = 0.0;
+  double to = 0.0;
+
+  /// True when `azimuth` lies in the sector.
+  bool contains(double azimuth) const;
+  bool operator==(const AzimuthSector&) const = default;
+};
+
 /// One batch of plots from one sensor: a revolution or a sector of it.
 struct PlotScan {
   std::uint32_t sensor = 0;
   std::uint64_t scan = 0;
   double time = 0.0;  // [s] the batch's reference time
   PlatformState platform;
-  MeasurementSigma sigma;  // scan-level defaults
+  MeasurementSigma sigma;                 // scan-level defaults
+  std::optional<AzimuthSector> coverage;  // absent: the whole surroundings
   std::vector<Plot> plots;
 
   bool operator==(const PlotScan&) const = default;

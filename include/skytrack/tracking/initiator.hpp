@@ -6,6 +6,7 @@
 // track; chains that cannot reach M in time are dropped. Chains are cheap (no filter), so
 // dense clutter costs seeds, not IMM tracks.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -29,9 +30,15 @@ class Initiator {
  public:
   explicit Initiator(const config::InitiationSpec& spec, int dims);
 
-  /// One scan of plots that no track used. Returns the chains completed this scan.
-  const std::vector<Initiation>& step(std::uint64_t scan_index,
-                                      const std::vector<PlotMeasurement>& plots);
+  /// Tells whether a batch looked at a position (a sector batch covers part of the sky).
+  using Coverage = std::function<bool(const Eigen::Vector3d&)>;
+
+  /// One batch of plots that no track used, taken at `time`. Seeds and chains age by the
+  /// batches that cover them ("looks"), so a revolution reported in sectors counts once.
+  /// Returns the chains completed by this batch.
+  const std::vector<Initiation>& step(std::uint64_t batch, double time,
+                                      const std::vector<PlotMeasurement>& plots,
+                                      const Coverage& covered);
 
   std::size_t seeds() const { return seeds_.size(); }
   std::size_t candidates() const { return chains_.size(); }
@@ -40,19 +47,21 @@ class Initiator {
   struct Seed {
     PlotMeasurement plot;
     Eigen::Vector3d position;
-    std::uint64_t scan = 0;
+    std::uint64_t batch = 0;
+    int looks = 0;  // batches that covered it since it was made
   };
   struct Chain {
     std::vector<PlotMeasurement> plots;
     Eigen::Vector3d position;  // of the last plot
     Eigen::Vector3d velocity;
     double time = 0.0;  // of the last plot
-    std::uint64_t first_scan = 0, last_scan = 0;
+    std::uint64_t last_batch = 0;
+    int looks = 0;  // looks spanned, from the first plot's on, inclusive
   };
 
-  void extend_chains(std::uint64_t scan, const std::vector<PlotMeasurement>& plots);
-  void pair_with_seeds(std::uint64_t scan, const std::vector<PlotMeasurement>& plots);
-  void retire(std::uint64_t scan);
+  void extend_chains(std::uint64_t batch, const std::vector<PlotMeasurement>& plots);
+  void pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasurement>& plots);
+  void retire();
 
   config::InitiationSpec spec_;
   int dims_;

@@ -70,6 +70,10 @@ class PointTracker {
 
   void make_measurements(const PlotScan& scan, ScanReport& report);
   double plot_spread_at(const Eigen::Vector3d& position, const PlotScan& scan) const;
+  /// True when the batch looked at `position` (always, unless it covers only a sector).
+  bool covers(const PlotScan& scan, const Eigen::Vector3d& position) const;
+  /// True when a search region (centre, radius) reaches into the batch's coverage.
+  bool covers_region(const PlotScan& scan, const Eigen::Vector3d& centre, double radius) const;
   void gate(const PlotScan& scan, double batch_mid, double half_span);
   void reject_clutter(ScanReport& report, TrackFrame& frame);
   void associate_and_update(ScanReport& report, TrackFrame& frame);
@@ -100,6 +104,7 @@ class PointTracker {
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> rejected_;
   std::vector<std::uint8_t> gated_;
+  std::vector<std::uint8_t> covered_;   // per track: inside this batch's coverage
   std::vector<ImmEstimate> predicted_;  // per track, at its update time
   std::vector<Candidate> candidates_;
   std::vector<int> neighbours_;
