@@ -408,7 +408,6 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     tracks_.push_back(std::move(track));
     ++report.initiated;
   }
-  (void)scan;
 }
 
 void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& frame) {

@@ -38,7 +38,8 @@ struct ScanReport {
   int initiated = 0, deleted = 0;
   int clusters = 0, largest_cluster = 0, approximated_clusters = 0;
   int numeric_failures = 0;
-  std::chrono::microseconds predict{}, associate{}, update{}, manage{};
+  // Stage timings: gating (predictions), association with the update, track management.
+  std::chrono::microseconds predict{}, associate{}, manage{};
 };
 
 struct PointTrack {
@@ -113,7 +114,6 @@ class PointTracker {
   std::vector<double> kept_beta_;
   std::vector<double> auto_density_;  // per plot, measurement space
   PlotIndex index_;
-  std::vector<std::int64_t> deleted_ids_;
 };
 
 }  // namespace skytrack
