@@ -1,5 +1,6 @@
 #include "skytrack/pipeline/pipeline.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace skytrack {
@@ -62,17 +63,13 @@ std::optional<std::string> Pipeline::check_order(const PlotScan& scan) const {
   return std::nullopt;
 }
 
-void Pipeline::drop_invalid_plots(const PlotScan& scan) {
-  clean_.sensor = scan.sensor;
-  clean_.scan = scan.scan;
-  clean_.time = scan.time;
-  clean_.platform = scan.platform;
-  clean_.sigma = scan.sigma;
-  clean_.coverage = scan.coverage;
-  clean_.plots.clear();
-  for (const Plot& plot : scan.plots) {
-    if (!invalid_plot_reason(plot)) clean_.plots.push_back(plot);
-  }
+const PlotScan& Pipeline::without_invalid_plots(const PlotScan& scan) {
+  const auto invalid = [](const Plot& plot) { return invalid_plot_reason(plot).has_value(); };
+  if (std::none_of(scan.plots.begin(), scan.plots.end(), invalid)) return scan;
+  // Copy the whole batch, so every field (present or added later) travels with the plots.
+  clean_ = scan;
+  std::erase_if(clean_.plots, invalid);
+  return clean_;
 }
 
 const ScanResult& Pipeline::process(const PlotScan& scan) {
@@ -91,11 +88,11 @@ const ScanResult& Pipeline::process(const PlotScan& scan) {
     return result_;
   }
   sensors_[scan.sensor] = {scan.scan, scan.time};
-  drop_invalid_plots(scan);
+  const PlotScan& usable = without_invalid_plots(scan);
   if (!tracker_)
-    tracker_.emplace(*PointTracker::create(profile_, tracker_dimension(profile_, clean_)));
-  tracker_->process(clean_, result_.frame, result_.report);
-  result_.report.plots_invalid += static_cast<int>(scan.plots.size() - clean_.plots.size());
+    tracker_.emplace(*PointTracker::create(profile_, tracker_dimension(profile_, usable)));
+  tracker_->process(usable, result_.frame, result_.report);
+  result_.report.plots_invalid += static_cast<int>(scan.plots.size() - usable.plots.size());
   counters_.plots_processed += scan.plots.size();
   counters_.plots_invalid += static_cast<std::uint64_t>(result_.report.plots_invalid);
   counters_.plots_rejected_clutter +=

@@ -44,7 +44,8 @@ class Pipeline {
  private:
   explicit Pipeline(const config::TrackingProfile& profile) : profile_(profile) {}
   std::optional<std::string> check_order(const PlotScan& scan) const;
-  void drop_invalid_plots(const PlotScan& scan);
+  /// The batch itself when all its plots are usable, else a copy without the bad ones.
+  const PlotScan& without_invalid_plots(const PlotScan& scan);
 
   config::TrackingProfile profile_;
   std::optional<PointTracker> tracker_;  // created with the first batch (its dimension)
@@ -54,7 +55,7 @@ class Pipeline {
   };
   std::map<std::uint32_t, SensorClock> sensors_;
   PipelineCounters counters_;
-  PlotScan clean_;  // the batch without its invalid plots (reused)
+  PlotScan clean_;  // a batch without its invalid plots, when it had some (reused)
   ScanResult result_;
 };
 
