@@ -346,6 +346,7 @@ TrackingProfile read_profile(const YAML::Node& node, ErrorList& errors) {
   std::size_t before = errors.messages().size();
   root.matrix("mode_transition", p.mode_transition);
   const bool transition_ok = errors.messages().size() == before;
+  root.number("mode_transition_interval", p.mode_transition_interval, Range::non_negative());
   before = errors.messages().size();
   root.numbers("initial_mode_probabilities", p.initial_mode_probabilities, {},
                Range::probability());

@@ -75,15 +75,34 @@ class AssociationWeights {
 
 ImmFilter::ImmFilter(std::vector<AnyMotionModel> models, std::vector<std::string> names,
                      Eigen::MatrixXd transition, StateLayout layout,
-                     config::MeasurementSpec measurement)
+                     config::MeasurementSpec measurement, double transition_interval)
     : models_(std::move(models)),
       names_(std::move(names)),
       transition_(std::move(transition)),
+      transition_interval_(transition_interval),
       layout_(layout),
       measurement_(std::move(measurement)) {
   assert(!models_.empty() && models_.size() <= kMaxImmModes);
   assert(names_.size() == models_.size());
   assert(transition_.rows() == mode_count() && transition_.cols() == mode_count());
+  assert(transition_interval_ >= 0.0);
+}
+
+Eigen::MatrixXd ImmFilter::transition_over(double dt) const {
+  if (transition_interval_ <= 0.0) return transition_;
+  const Eigen::Index n = transition_.rows();
+  if (!(dt > 0.0)) return Eigen::MatrixXd::Identity(n, n);
+  // Beyond 64 intervals every row is at the chain's stationary mix for any sensible P.
+  const double steps = std::min(dt / transition_interval_, 64.0);
+  const double whole = std::floor(steps);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Identity(n, n) +
+                        (steps - whole) * (transition_ - Eigen::MatrixXd::Identity(n, n));
+  Eigen::MatrixXd power = transition_;  // P^(2^b) for the bits b of `whole`
+  for (auto k = static_cast<unsigned>(whole); k != 0; k >>= 1) {
+    if (k & 1u) out = power * out;
+    if (k > 1) power = power * power;
+  }
+  return out;
 }
 
 ImmEstimate ImmFilter::initial(const Gaussian& state, const Eigen::VectorXd& probabilities,
@@ -105,13 +124,14 @@ ImmEstimate ImmFilter::predict(const ImmEstimate& posterior, double time) const 
   ImmEstimate out;
   out.time = time;
   out.modes.resize(models_.size());
-  Eigen::VectorXd& c = out.probabilities;
-  c.noalias() = transition_.transpose() * posterior.probabilities;  // c_j
   const double dt = time - posterior.time;
+  const Eigen::MatrixXd transition = transition_over(dt);
+  Eigen::VectorXd& c = out.probabilities;
+  c.noalias() = transition.transpose() * posterior.probabilities;  // c_j
   for (int j = 0; j < n; ++j) {
     if (c[j] > 0.0) {  // eq. 1-2 with mu_i|j = p_ij mu_i / c_j
       const Gaussian mixed = moment_match(posterior.modes, [&](std::size_t i) {
-        return transition_(static_cast<Eigen::Index>(i), j) * posterior.probabilities[i] / c[j];
+        return transition(static_cast<Eigen::Index>(i), j) * posterior.probabilities[i] / c[j];
       });
       out.modes[j] = skytrack::predict(models_[j], layout_, mixed, dt);
     } else {  // unreachable mode: nothing to mix, carry its own estimate

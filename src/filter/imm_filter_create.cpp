@@ -52,7 +52,8 @@ std::string model_problem(const AnyMotionModel& model) {
 
 Expected<ImmFilter> ImmFilter::create(std::vector<AnyMotionModel> models,
                                       std::vector<std::string> names, Eigen::MatrixXd transition,
-                                      StateLayout layout, config::MeasurementSpec measurement) {
+                                      StateLayout layout, config::MeasurementSpec measurement,
+                                      double transition_interval) {
   const auto n = static_cast<Eigen::Index>(models.size());
   if (n == 0 || n > kMaxImmModes) {
     return make_error("an IMM needs 1 to " + std::to_string(kMaxImmModes) + " modes");
@@ -88,8 +89,11 @@ Expected<ImmFilter> ImmFilter::create(std::vector<AnyMotionModel> models,
       !(ut.alpha > 0.0 && ut.alpha <= 1.0 && std::isfinite(ut.beta) && ut.kappa >= 0.0)) {
     return make_error("unscented parameters need alpha in (0, 1] and kappa >= 0");
   }
+  if (!(transition_interval >= 0.0 && std::isfinite(transition_interval))) {
+    return make_error("mode_transition_interval must be a finite number >= 0");
+  }
   return ImmFilter(std::move(models), std::move(names), std::move(transition), layout,
-                   std::move(measurement));
+                   std::move(measurement), transition_interval);
 }
 
 Expected<ImmFilter> ImmFilter::from_profile(const config::TrackingProfile& profile, int auto_dims) {
@@ -113,7 +117,8 @@ Expected<ImmFilter> ImmFilter::from_profile(const config::TrackingProfile& profi
   }
   const int dims = profile.dimension == 0 ? auto_dims : profile.dimension;
   return create(std::move(models), std::move(names), std::move(transition),
-                layout_for(profile.motion_models, dims), profile.measurement);
+                layout_for(profile.motion_models, dims), profile.measurement,
+                profile.mode_transition_interval);
 }
 
 }  // namespace skytrack

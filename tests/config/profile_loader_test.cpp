@@ -127,6 +127,8 @@ TEST(ProfileLoader, OutOfRangeValueSaysTheRangeAndTheValue) {
             "p.yaml:4: track_life.confirm_n: expected an integer >= 1, got 0");
   EXPECT_EQ(error_of("dimension: 4\n"),
             "p.yaml:3: dimension: expected an integer in [2, 3], got 4");
+  EXPECT_EQ(error_of("mode_transition_interval: -4\n"),
+            "p.yaml:3: mode_transition_interval: expected a number >= 0, got -4");
   const auto automatic = parse_profile(kHeader + std::string("dimension: auto\n"), "p.yaml");
   ASSERT_TRUE(automatic) << automatic.error().message;
   EXPECT_EQ(automatic->dimension, 0);

@@ -157,6 +157,11 @@ struct TrackingProfile {
       {0.18, 0.80, 0.02},
       {0.18, 0.02, 0.80},
   };
+  // [s] the interval mode_transition is given for: a prediction over dt applies it
+  // dt / interval times (P^k (I + f (P - I)), k + f = dt / interval), so a rotating
+  // antenna's plots, seconds apart within one batch, are not each given a whole scan's
+  // switching. 0: once per prediction whatever its length (paper 003's per-scan form).
+  double mode_transition_interval = 4.0;
   std::vector<double> initial_mode_probabilities = {0.8, 0.1, 0.1};
   AssociationSpec association;
   ClutterRejectionSpec clutter_rejection;

@@ -67,15 +67,19 @@ struct PlotHypothesis {
 
 class ImmFilter {
  public:
-  /// `transition`: Markov matrix p_ij = P(mode j now | mode i before), rows sum to 1. The
-  /// arguments must be valid (create() checks them; the constructor only asserts).
+  /// `transition`: Markov matrix p_ij = P(mode j now | mode i before), rows sum to 1, given
+  /// for predictions over `transition_interval` seconds (0: applied once per prediction,
+  /// whatever its length). The arguments must be valid (create() checks them; the
+  /// constructor only asserts).
   ImmFilter(std::vector<AnyMotionModel> models, std::vector<std::string> names,
-            Eigen::MatrixXd transition, StateLayout layout, config::MeasurementSpec measurement);
+            Eigen::MatrixXd transition, StateLayout layout, config::MeasurementSpec measurement,
+            double transition_interval = 0.0);
 
   /// Checks sizes, the Markov matrix, the layout against the models, and the parameters.
   static Expected<ImmFilter> create(std::vector<AnyMotionModel> models,
                                     std::vector<std::string> names, Eigen::MatrixXd transition,
-                                    StateLayout layout, config::MeasurementSpec measurement);
+                                    StateLayout layout, config::MeasurementSpec measurement,
+                                    double transition_interval = 0.0);
   /// The profile's models, Markov matrix and measurement settings, in the profile's
   /// dimension, or in `auto_dims` when the profile leaves it to the plots (dimension 0).
   static Expected<ImmFilter> from_profile(const config::TrackingProfile& profile,
@@ -86,7 +90,7 @@ class ImmFilter {
                       double time) const;
 
   /// Mixing (eq. 1-2) and per-mode prediction to `time`; the result's probabilities are the
-  /// predicted c_j.
+  /// predicted c_j. The Markov matrix is the one for the interval (transition_over).
   ImmEstimate predict(const ImmEstimate& posterior, double time) const noexcept;
 
   /// Innovations of one plot against every mode of a prediction.
@@ -101,12 +105,18 @@ class ImmFilter {
                      double detection_probability, double gate_probability,
                      double clutter_density) const noexcept;
 
+  /// The Markov matrix over `dt` seconds: P^k (I + f (P - I)) with k + f = dt / interval
+  /// (k whole), a stochastic matrix equal to P at dt = interval and to I at dt = 0; P itself
+  /// when the interval is 0. Backward predictions (dt < 0) switch no mode.
+  Eigen::MatrixXd transition_over(double dt) const;
+
   /// Combined estimate, eq. 6-7.
   Gaussian combine(const ImmEstimate& estimate) const noexcept;
 
   const std::vector<std::string>& names() const { return names_; }
   const std::vector<AnyMotionModel>& models() const { return models_; }
   const Eigen::MatrixXd& transition() const { return transition_; }
+  double transition_interval() const { return transition_interval_; }
   const StateLayout& layout() const { return layout_; }
   const config::MeasurementSpec& measurement_spec() const { return measurement_; }
   int mode_count() const { return static_cast<int>(models_.size()); }
@@ -115,6 +125,7 @@ class ImmFilter {
   std::vector<AnyMotionModel> models_;
   std::vector<std::string> names_;
   Eigen::MatrixXd transition_;
+  double transition_interval_ = 0.0;
   StateLayout layout_;
   config::MeasurementSpec measurement_;
 };
