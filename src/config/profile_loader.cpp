@@ -224,12 +224,20 @@ InitiationSpec read_initiation(YamlSection s) {
 
 TrackLifeSpec read_track_life(YamlSection s) {
   TrackLifeSpec t;
+  read_enum(s, "confirmation", t.confirmation,
+            {ConfirmationMethod::kMOfN, ConfirmationMethod::kExistence});
   s.integer("confirm_m", t.confirm_m, kAtLeastOne);
   s.integer("confirm_n", t.confirm_n, kAtLeastOne);
   s.integer("delete_tentative_misses", t.delete_tentative_misses, kAtLeastOne);
   s.integer("delete_confirmed_misses", t.delete_confirmed_misses, kAtLeastOne);
   s.number("delete_position_sigma", t.delete_position_sigma, Range::positive());
+  s.number("initial_existence", t.initial_existence, kOpenUnit);
+  s.number("confirm_existence", t.confirm_existence, kOpenUnit);
+  s.number("delete_existence", t.delete_existence, kOpenUnit);
+  s.number("survival_probability", t.survival_probability, Range{0.0, 1.0, true, false});
   check_order(s, "confirm_m", t.confirm_m, "confirm_n", t.confirm_n, false);
+  check_order(s, "delete_existence", t.delete_existence, "confirm_existence", t.confirm_existence,
+              true);
   s.finish();
   return t;
 }

@@ -303,6 +303,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   PointTrack& track = tracks_[t];
   if (!covered_[t] && candidates.empty()) return;  // not looked at: neither updated nor aged
   const double pd = profile_.association.detection_probability;
+  double likelihood_ratio = 0.0;  // sum_i L_i / lambda_i over the gated plots
   if (candidates.empty()) {
     track.estimate = filter_.predict(track.estimate, std::max(frame.time, track.estimate.time));
   } else {
@@ -313,7 +314,9 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
     double density = 0.0, kept = beta_miss;
     for (std::size_t k = 0; k < candidates.size(); ++k) {
       Candidate& c = candidates_[candidates[k]];
-      density += clutter_density(plots_[c.plot], c.plot) / static_cast<double>(candidates.size());
+      const double plot_density = clutter_density(plots_[c.plot], c.plot);
+      density += plot_density / static_cast<double>(candidates.size());
+      if (c.hypothesis.usable) likelihood_ratio += c.hypothesis.likelihood / plot_density;
       if (beta_plots[k] >= kAssociationReportThreshold) {
         frame.associations.push_back({track.id, plots_[c.plot].plot_id, beta_plots[k]});
       }
@@ -328,6 +331,8 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   }
   const double detection = 1.0 - beta_miss;
   track.quality = 0.8 * track.quality + 0.2 * detection;
+  update_existence(track.life, likelihood_ratio, pd, profile_.association.gate_probability,
+                   profile_.track_life);
   const double spread = position_spread(filter_.combine(track.estimate), layout_.dims);
   const LifeChange change = advance_life(track.life, detection > 0.5, spread, profile_.track_life);
   if (change.confirmed) add_event(frame, "confirmed", track.id, "");
@@ -335,7 +340,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   if (change.deleted) add_event(frame, "deleted", track.id, "");
 }
 
-ImmEstimate PointTracker::start_estimate(const Initiation& initiation) const {
+ImmEstimate PointTracker::start_estimate(const Initiation& initiation, TrackLife& life) const {
   // Two-point start at the second plot, then IMM updates with any further plots.
   const PlotMeasurement& a = initiation.plots[0];
   const PlotMeasurement& b = initiation.plots[1];
@@ -382,9 +387,12 @@ ImmEstimate PointTracker::start_estimate(const Initiation& initiation) const {
     const ImmEstimate predicted = filter_.predict(estimate, std::max(plot.time, estimate.time));
     const PlotHypothesis h = filter_.hypothesise(predicted, plot);
     if (!h.usable) continue;
+    const double density = clutter_density(plot, -1);
+    update_existence(life, h.likelihood / density, profile_.association.detection_probability,
+                     profile_.association.gate_probability, profile_.track_life);
     estimate = filter_.update(predicted, std::span(&h, 1), std::span(&one, 1), 0.0,
                               profile_.association.detection_probability,
-                              profile_.association.gate_probability, clutter_density(plot, -1));
+                              profile_.association.gate_probability, density);
   }
   return estimate;
 }
@@ -399,7 +407,8 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     PointTrack track;
     track.id = next_id_++;
     track.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
-    track.estimate = start_estimate(initiation);
+    track.life.existence = profile_.track_life.initial_existence;
+    track.estimate = start_estimate(initiation, track.life);
     track.quality = 1.0;
     std::string detail = "from plots";
     for (const PlotMeasurement& p : initiation.plots) detail += " " + std::to_string(p.plot_id);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 
 namespace skytrack {
 
@@ -17,6 +18,16 @@ TrackLife initiated_life(int plots, int scans) noexcept {
   return life;
 }
 
+void update_existence(TrackLife& life, double likelihood_ratio, double detection_probability,
+                      double gate_probability, const config::TrackLifeSpec& spec) noexcept {
+  const double predicted = spec.survival_probability * life.existence;
+  const double ratio = std::isfinite(likelihood_ratio) ? std::max(likelihood_ratio, 0.0) : 0.0;
+  const double delta = detection_probability * (gate_probability - ratio);
+  const double updated = (1.0 - delta) * predicted / (1.0 - delta * predicted);
+  // Kept off 0 and 1 so that later scans can still move it.
+  life.existence = std::isfinite(updated) ? std::clamp(updated, 1e-9, 1.0 - 1e-9) : predicted;
+}
+
 LifeChange advance_life(TrackLife& life, bool detected, double position_sigma,
                         const config::TrackLifeSpec& spec) noexcept {
   LifeChange change;
@@ -29,21 +40,25 @@ LifeChange advance_life(TrackLife& life, bool detected, double position_sigma,
     ++life.consecutive_misses;
   }
 
+  const bool by_existence = spec.confirmation == config::ConfirmationMethod::kExistence;
+  const bool unlikely = by_existence && life.existence < spec.delete_existence;
   const bool firm = life.status == TrackStatus::kConfirmed || life.status == TrackStatus::kCoasting;
   if (!firm) {
     const int window = std::min(spec.confirm_n, 32);
     const std::uint32_t mask = window == 32 ? 0xFFFFFFFFu : (1u << window) - 1u;
-    if (std::popcount(life.history & mask) >= spec.confirm_m) {
+    const bool confirm = by_existence ? life.existence >= spec.confirm_existence
+                                      : std::popcount(life.history & mask) >= spec.confirm_m;
+    if (confirm) {
       life.status = TrackStatus::kConfirmed;
       change.confirmed = true;
-    } else if (life.consecutive_misses >= spec.delete_tentative_misses ||
+    } else if (unlikely || life.consecutive_misses >= spec.delete_tentative_misses ||
                position_sigma > spec.delete_position_sigma) {
       life.status = TrackStatus::kDeleted;
       change.deleted = true;
     }
     return change;
   }
-  if (life.consecutive_misses >= spec.delete_confirmed_misses ||
+  if (unlikely || life.consecutive_misses >= spec.delete_confirmed_misses ||
       position_sigma > spec.delete_position_sigma) {
     life.status = TrackStatus::kDeleted;
     change.deleted = true;

@@ -1,3 +1,6 @@
+#include <cmath>
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "skytrack/tracking/track_life.hpp"
@@ -7,12 +10,75 @@ namespace {
 
 config::TrackLifeSpec spec() {
   config::TrackLifeSpec s;
+  s.confirmation = config::ConfirmationMethod::kMOfN;
   s.confirm_m = 3;
   s.confirm_n = 4;
   s.delete_tentative_misses = 2;
   s.delete_confirmed_misses = 3;
   s.delete_position_sigma = 1000.0;
   return s;
+}
+
+config::TrackLifeSpec existence_spec() {
+  config::TrackLifeSpec s = spec();
+  s.confirmation = config::ConfirmationMethod::kExistence;
+  s.confirm_existence = 0.95;
+  s.delete_existence = 0.01;
+  s.survival_probability = 0.98;
+  return s;
+}
+
+TEST(TrackLife, ExistenceFollowsTheIpdaRecursion) {
+  // GIVEN existence 0.5, P_S 0.98, P_D 0.9, P_G 0.999
+  TrackLife life;
+  life.existence = 0.5;
+  // WHEN a scan has no plot in the gate: chi- = 0.49, delta = 0.8991,
+  // chi = 0.1009 * 0.49 / (1 - 0.8991 * 0.49) = 0.0494410 / 0.5594410 (by hand)
+  update_existence(life, 0.0, 0.9, 0.999, existence_spec());
+  EXPECT_NEAR(life.existence, 0.0494410 / 0.5594410, 1e-9);
+  // WHEN a plot 100 times likelier under the track than as clutter arrives:
+  // delta = 0.9 (0.999 - 100) = -89.1009; chi = 90.1009 chi- / (1 + 89.1009 chi-)
+  const double before = 0.98 * life.existence;
+  update_existence(life, 100.0, 0.9, 0.999, existence_spec());
+  EXPECT_NEAR(life.existence, 90.1009 * before / (1.0 + 89.1009 * before), 1e-12);
+  EXPECT_GT(life.existence, 0.85);
+  // WHEN the gate holds only clutter whose likelihoods sum to P_G (its mean): delta = 0,
+  // the existence only decays by survival
+  const double last = life.existence;
+  update_existence(life, 0.999, 0.9, 0.999, existence_spec());
+  EXPECT_NEAR(life.existence, 0.98 * last, 1e-12);
+  // AND nothing non-finite gets in
+  update_existence(life, std::numeric_limits<double>::quiet_NaN(), 0.9, 0.999, existence_spec());
+  EXPECT_TRUE(std::isfinite(life.existence));
+  EXPECT_GT(life.existence, 0.0);
+}
+
+TEST(TrackLife, ExistenceConfirmsAndDeletesOnItsThresholds) {
+  const config::TrackLifeSpec s = existence_spec();
+  // GIVEN a new track at existence 0.1: one strong plot does not confirm it (0.1 -> ~0.9)...
+  TrackLife life = initiated_life(3, 3);
+  life.existence = 0.1;
+  update_existence(life, 100.0, 0.9, 0.999, s);
+  EXPECT_FALSE(advance_life(life, true, 10.0, s).confirmed);
+  // ...a second one does, whatever the M-of-N count says
+  update_existence(life, 100.0, 0.9, 0.999, s);
+  EXPECT_GE(life.existence, 0.95);
+  EXPECT_TRUE(advance_life(life, true, 10.0, s).confirmed);
+  // A confirmed track whose existence collapses is deleted before its miss limit.
+  life.existence = 0.005;
+  const LifeChange change = advance_life(life, true, 10.0, s);
+  EXPECT_TRUE(change.deleted);
+  // AND a tentative clutter chain with only clutter-like plots never confirms and dies.
+  TrackLife chain = initiated_life(3, 3);
+  chain.existence = 0.1;
+  bool deleted = false;
+  for (int scan = 0; scan < 40 && !deleted; ++scan) {
+    update_existence(chain, scan % 2 == 0 ? 0.999 : 0.0, 0.9, 0.999, s);
+    const LifeChange c = advance_life(chain, scan % 2 == 0, 10.0, s);
+    EXPECT_FALSE(c.confirmed);
+    deleted = c.deleted;
+  }
+  EXPECT_TRUE(deleted);
 }
 
 TEST(TrackLife, ConfirmsOnMOfNCountedFromTheFirstPlot) {

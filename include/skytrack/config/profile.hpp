@@ -20,6 +20,7 @@ enum class MotionModelType {
 };
 enum class MeasurementUpdate { kEkf, kUnscented };
 enum class AssociationMethod { kJpda, kGnn };
+enum class ConfirmationMethod { kMOfN, kExistence };
 
 struct ProfileIdentity {
   std::string name;     // required; shown in logs, status and check-profile
@@ -114,8 +115,16 @@ struct InitiationSpec {
 
 /// tentative -> confirmed -> coasting -> deleted.
 struct TrackLifeSpec {
+  // m_of_n: confirmed on M plots in the last N scans. existence: on the probability that
+  // the track is a target (IPDA, Musicki et al. 1994), which weighs each plot's likelihood
+  // against the clutter density, so chains of clutter plots rarely confirm.
+  ConfirmationMethod confirmation = ConfirmationMethod::kExistence;
   int confirm_m = 3;                      // confirmed when M of the last N scans had a plot
   int confirm_n = 4;                      // (counted from the track's first plot)
+  double initial_existence = 0.05;        // of a new track, before its chain's later plots
+  double confirm_existence = 0.95;        // confirmed at or above
+  double delete_existence = 0.02;         // deleted below (tentative or confirmed)
+  double survival_probability = 0.98;     // a target is still there one scan later
   int delete_tentative_misses = 2;        // consecutive misses that delete a tentative track
   int delete_confirmed_misses = 5;        // K consecutive misses that delete a confirmed track
   double delete_position_sigma = 2000.0;  // [m] or when sqrt(max eig of P_pos) exceeds this
@@ -208,6 +217,10 @@ constexpr std::string_view to_string(MeasurementUpdate update) {
 
 constexpr std::string_view to_string(AssociationMethod method) {
   return method == AssociationMethod::kJpda ? "jpda" : "gnn";
+}
+
+constexpr std::string_view to_string(ConfirmationMethod method) {
+  return method == ConfirmationMethod::kMOfN ? "m_of_n" : "existence";
 }
 
 }  // namespace skytrack::config

@@ -85,7 +85,9 @@ class PointTracker {
   /// Clutter density for plot `index` of this batch (-1: a plot of an earlier batch).
   double clutter_density(const PlotMeasurement& plot, int index) const;
   void estimate_clutter_density();
-  ImmEstimate start_estimate(const Initiation& initiation) const;
+  /// The start of a new track's estimate; the chain's plots after the first two also update
+  /// its existence.
+  ImmEstimate start_estimate(const Initiation& initiation, TrackLife& life) const;
 
   config::TrackingProfile profile_;
   StateLayout layout_;

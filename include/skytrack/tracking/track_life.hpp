@@ -1,7 +1,17 @@
 #pragma once
 // Track life: tentative -> confirmed -> coasting -> deleted. Confirmation is M of the last N
-// scans with a plot, counted from the track's first plot; deletion after K consecutive
-// misses (fewer for tentative tracks) or when the position uncertainty outgrows a limit.
+// scans with a plot, counted from the track's first plot, or (profile's choice) the
+// probability of existence reaching a threshold; deletion after K consecutive misses (fewer
+// for tentative tracks), when the existence falls below a threshold, or when the position
+// uncertainty outgrows a limit.
+//
+// Existence (IPDA, Musicki, Evans & Stankovic 1994, IEEE Trans. AC-39(6)) per scan:
+//   predicted  chi- = P_S chi
+//   update     delta = P_D P_G - P_D sum_i L_i / lambda_i   (the track's gated plots, L_i
+//              the plot's likelihood, lambda_i the clutter density in measurement space)
+//              chi = (1 - delta) chi- / (1 - delta chi-)
+// A plot much likelier under the track than as clutter raises chi; a miss multiplies the
+// odds by 1 - P_D P_G; clutter alone in the gate leaves them about where they were.
 #include <cstdint>
 
 #include "skytrack/config/profile.hpp"
@@ -16,6 +26,7 @@ struct TrackLife {
   int scans = 0;              // scans since the first plot, inclusive
   int consecutive_misses = 0;
   int hits = 0;
+  double existence = 1.0;  // probability that the track is a target (existence method)
 };
 
 /// What a scan's outcome did to a track's life.
@@ -30,6 +41,11 @@ struct LifeChange {
 /// sqrt(max eigenvalue) of the position covariance [m].
 LifeChange advance_life(TrackLife& life, bool detected, double position_sigma,
                         const config::TrackLifeSpec& spec) noexcept;
+
+/// One scan's existence update (see the top of this file); `likelihood_ratio` is
+/// sum_i L_i / lambda_i over the track's gated plots (0 when it had none).
+void update_existence(TrackLife& life, double likelihood_ratio, double detection_probability,
+                      double gate_probability, const config::TrackLifeSpec& spec) noexcept;
 
 /// Starts a life from an initiation that used `plots` plots over `scans` scans.
 TrackLife initiated_life(int plots, int scans) noexcept;
