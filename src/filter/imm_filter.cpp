@@ -10,16 +10,40 @@
 #include <utility>
 
 #include "pda_detail.hpp"
+#include "skytrack/filter/fixed_size.hpp"
 
 namespace skytrack {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+/// moment_match at a compile-time state size N.
+template <int N, class WeightAt>
+Gaussian moment_match_fixed(const std::vector<Gaussian>& parts, const WeightAt& weight) noexcept {
+  using Vec = Eigen::Matrix<double, N, 1>;
+  using Mat = Eigen::Matrix<double, N, N>;
+  Vec mean = Vec::Zero();
+  for (std::size_t i = 0; i < parts.size(); ++i) mean += weight(i) * Vec(parts[i].mean);
+  Mat covariance = Mat::Zero();
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    const double w = weight(i);
+    if (w == 0.0) continue;
+    const Vec dx = Vec(parts[i].mean) - mean;
+    covariance += w * Mat(parts[i].covariance);
+    covariance.noalias() += w * (dx * dx.transpose());
+  }
+  return Gaussian{mean, covariance};
+}
+
 /// sum_i w_i (P_i + (x_i - x)(x_i - x)') with x = sum_i w_i x_i, the weights summing to 1.
 template <class WeightAt>
 Gaussian moment_match(const std::vector<Gaussian>& parts, const WeightAt& weight) noexcept {
   Gaussian out;
+  if (with_fixed_state_size(static_cast<int>(parts.front().mean.size()), [&](auto n) {
+        out = moment_match_fixed<decltype(n)::value>(parts, weight);
+      })) {
+    return out;
+  }
   out.mean = StateVec::Zero(parts.front().mean.size());
   for (std::size_t i = 0; i < parts.size(); ++i) out.mean += weight(i) * parts[i].mean;
   out.covariance = StateMat::Zero(out.mean.size(), out.mean.size());
@@ -125,9 +149,21 @@ ImmEstimate ImmFilter::predict(const ImmEstimate& posterior, double time) const 
   out.time = time;
   out.modes.resize(models_.size());
   const double dt = time - posterior.time;
-  const Eigen::MatrixXd transition = transition_over(dt);
+  // The Markov matrix over dt (transition_over); within one interval, the common case, its
+  // entries come straight from P without forming a matrix.
+  const double steps = transition_interval_ > 0.0 ? std::max(dt, 0.0) / transition_interval_ : 1.0;
+  Eigen::MatrixXd long_transition;
+  if (steps > 1.0 && transition_interval_ > 0.0) long_transition = transition_over(dt);
+  const auto transition = [&](Eigen::Index i, Eigen::Index j) {
+    if (steps > 1.0 && transition_interval_ > 0.0) return long_transition(i, j);
+    if (steps == 1.0) return transition_(i, j);
+    return (i == j ? 1.0 - steps : 0.0) + steps * transition_(i, j);
+  };
   Eigen::VectorXd& c = out.probabilities;
-  c.noalias() = transition.transpose() * posterior.probabilities;  // c_j
+  c = Eigen::VectorXd::Zero(n);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) c[j] += transition(i, j) * posterior.probabilities[i];  // c_j
+  }
   for (int j = 0; j < n; ++j) {
     if (c[j] > 0.0) {  // eq. 1-2 with mu_i|j = p_ij mu_i / c_j
       const Gaussian mixed = moment_match(posterior.modes, [&](std::size_t i) {

@@ -6,14 +6,37 @@
 #include <cassert>
 #include <type_traits>
 
+#include "skytrack/filter/fixed_size.hpp"
+
 namespace skytrack {
 namespace {
 
 template <class Model>
 constexpr bool kNonLinear = std::is_same_v<Model, CoordinatedTurnEstimated>;
 
-/// P' = F P F' + Q (dt > 0) or F (P + Q) F' (dt < 0).
+/// P' = F P F' + Q (dt > 0) or F (P + Q) F' (dt < 0), symmetrised.
+template <int N>
+void propagate_fixed(const StateMat& F, const StateMat& Q, double dt, StateMat& P) noexcept {
+  using Mat = Eigen::Matrix<double, N, N>;
+  const Mat f = F, q = Q;
+  Mat p = P;
+  if (dt > 0.0) {
+    const Mat fp = f * p;
+    p.noalias() = fp * f.transpose();
+    p += q;
+  } else {
+    p += q;
+    const Mat fp = f * p;
+    p.noalias() = fp * f.transpose();
+  }
+  P = 0.5 * (p + p.transpose());
+}
+
 void propagate_covariance(const StateMat& F, const StateMat& Q, double dt, StateMat& P) noexcept {
+  if (with_fixed_state_size(static_cast<int>(P.rows()),
+                            [&](auto n) { propagate_fixed<decltype(n)::value>(F, Q, dt, P); })) {
+    return;
+  }
   StateMat FP;
   if (dt > 0.0) {
     FP.noalias() = F * P;

@@ -102,35 +102,49 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
 
 void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasurement>& plots) {
   if (seeds_.empty()) return;
-  // Search the seeds around each new plot: index the seeds once.
-  std::vector<Eigen::Vector3d> seed_positions;
-  seed_positions.reserve(seeds_.size());
-  double oldest = std::numeric_limits<double>::infinity();
-  for (const Seed& seed : seeds_) {
-    seed_positions.push_back(seed.position);
-    oldest = std::min(oldest, seed.plot.time);
+  // Seeds are kept in batch order. Each batch's seeds get their own index, searched with the
+  // reach of that batch's age, so a young seed batch is not searched as far as the oldest.
+  seed_groups_.clear();
+  for (std::size_t begin = 0; begin < seeds_.size();) {
+    std::size_t end = begin;
+    SeedGroup group{begin, 0, std::numeric_limits<double>::infinity()};
+    std::vector<Eigen::Vector3d>& group_positions = seed_positions_;
+    group_positions.clear();
+    for (; end < seeds_.size() && seeds_[end].batch == seeds_[begin].batch; ++end) {
+      group_positions.push_back(seeds_[end].position);
+      group.oldest = std::min(group.oldest, seeds_[end].plot.time);
+      group.max_sigma = std::max(group.max_sigma, position_sigma(seeds_[end].plot));
+    }
+    group.end = end;
+    if (seed_indices_.size() < seed_groups_.size() + 1) seed_indices_.emplace_back();
+    seed_indices_[seed_groups_.size()].build(group_positions, dims_);
+    seed_groups_.push_back(group);
+    begin = end;
   }
-  PlotIndex seed_index;
-  seed_index.build(seed_positions, dims_);
   for (std::size_t i = 0; i < plots.size(); ++i) {
     if (used_[i]) continue;
-    const double reach =
-        spec_.max_speed * (plots[i].time - oldest) + 4.0 * position_sigma(plots[i]);
-    seed_index.within(positions_[i], reach, neighbours_);
     // The seed whose implied speed is plausible and whose distance is smallest.
     int best = -1;
     double best_distance = std::numeric_limits<double>::infinity();
-    for (const int s : neighbours_) {
-      const Seed& seed = seeds_[s];
-      const double dt = plots[i].time - seed.plot.time;
-      if (dt <= 0.0 || seed.batch == batch || seed.looks < 1) continue;
-      const double distance = (positions_[i] - seed.position).head(dims_).norm();
-      const double slack = 3.0 * (position_sigma(plots[i]) + position_sigma(seed.plot));
-      const double speed_low = (distance - slack) / dt, speed_high = (distance + slack) / dt;
-      if (speed_high < spec_.min_speed || speed_low > spec_.max_speed) continue;
-      if (distance < best_distance) {
-        best_distance = distance;
-        best = s;
+    for (std::size_t g = 0; g < seed_groups_.size(); ++g) {
+      const SeedGroup& group = seed_groups_[g];
+      // Every seed the speed test below can accept: distance - slack <= max_speed dt.
+      const double reach = spec_.max_speed * (plots[i].time - group.oldest) +
+                           3.0 * (position_sigma(plots[i]) + group.max_sigma) + 1.0;
+      seed_indices_[g].within(positions_[i], reach, neighbours_);
+      for (const int member : neighbours_) {
+        const int s = static_cast<int>(group.begin) + member;
+        const Seed& seed = seeds_[s];
+        const double dt = plots[i].time - seed.plot.time;
+        if (dt <= 0.0 || seed.batch == batch || seed.looks < 1) continue;
+        const double distance = (positions_[i] - seed.position).head(dims_).norm();
+        const double slack = 3.0 * (position_sigma(plots[i]) + position_sigma(seed.plot));
+        const double speed_low = (distance - slack) / dt, speed_high = (distance + slack) / dt;
+        if (speed_high < spec_.min_speed || speed_low > spec_.max_speed) continue;
+        if (distance < best_distance) {
+          best_distance = distance;
+          best = s;
+        }
       }
     }
     if (best < 0) continue;

@@ -68,7 +68,16 @@ class Initiator {
   std::vector<Seed> seeds_;
   std::vector<Chain> chains_;
   std::vector<Initiation> completed_;
+  struct SeedGroup {  // the seeds of one batch: seeds_[begin, end)
+    std::size_t begin = 0, end = 0;
+    double oldest = 0.0;     // earliest plot time among them
+    double max_sigma = 0.0;  // largest position_sigma among them
+  };
+
   // Workspaces reused every scan.
+  std::vector<SeedGroup> seed_groups_;
+  std::vector<PlotIndex> seed_indices_;  // one per seed group
+  std::vector<Eigen::Vector3d> seed_positions_;
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> used_;
   std::vector<int> neighbours_;
