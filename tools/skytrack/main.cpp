@@ -1,4 +1,5 @@
-// skytrack: the command-line tool (simulate, track, eval, check-profile).
+// skytrack: the command-line tool (simulate, track, eval, check-profile; replay, record and
+// status over DDS).
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
@@ -11,6 +12,9 @@ int main(int argc, char** argv) {
   skytrack::tool::add_eval_command(app, exit_code);
   skytrack::tool::add_check_profile_command(app, exit_code);
   skytrack::tool::add_track_command(app, exit_code);
+  skytrack::tool::add_replay_command(app, exit_code);
+  skytrack::tool::add_record_command(app, exit_code);
+  skytrack::tool::add_status_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
 }
