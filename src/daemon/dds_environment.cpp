@@ -50,10 +50,13 @@ bool is_loopback_only_config(const std::string& path) {
 }
 
 Expected<std::string> ensure_dds_configuration() {
+  return ensure_dds_configuration(loopback_config_candidates(executable_path()));
+}
+
+Expected<std::string> ensure_dds_configuration(const std::vector<std::string>& candidates) {
   if (const char* uri = std::getenv("CYCLONEDDS_URI"); uri != nullptr && *uri != '\0') {
     return "CYCLONEDDS_URI=" + std::string(uri) + " (set by the user)";
   }
-  const auto candidates = loopback_config_candidates(executable_path());
   for (const std::string& path : candidates) {
     if (!is_loopback_only_config(path)) continue;
     const std::string uri = "file://" + fs::absolute(path).lexically_normal().string();

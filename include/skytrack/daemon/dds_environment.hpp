@@ -24,5 +24,7 @@ bool is_loopback_only_config(const std::string& path);
 /// candidate. Returns a line for the log ("CYCLONEDDS_URI=... (set by the user)"), or an error
 /// naming every place searched. Call before any dds_* function.
 Expected<std::string> ensure_dds_configuration();
+/// As above, searching `candidates` (for tests).
+Expected<std::string> ensure_dds_configuration(const std::vector<std::string>& candidates);
 
 }  // namespace skytrack::daemon
