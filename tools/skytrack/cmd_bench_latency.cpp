@@ -97,8 +97,8 @@ int run_bench(const BenchOptions& o) {
       for (dds_return_t i = 0; i < n; ++i) {
         const auto& b =
             *static_cast<const skytrack_dds_TrackBatch*>(samples[static_cast<std::size_t>(i)]);
-        found = found || (infos[static_cast<std::size_t>(i)].valid_data &&
-                          b.sensor == o.sensor && b.scan == wanted);
+        found = found || (infos[static_cast<std::size_t>(i)].valid_data && b.sensor == o.sensor &&
+                          b.scan == wanted);
       }
       dds_return_loan(*reader, samples.data(), n);
     }
@@ -143,8 +143,7 @@ void add_bench_latency_command(CLI::App& app, int& exit_code) {
       "bench-latency", "Time PlotBatch -> TrackBatch through a running skytrackd (benchmark)");
   cmd->add_option("--targets", o->targets, "Targets (plots) per scan")->default_val(100);
   cmd->add_option("--scans", o->scans, "Timed scans")->default_val(300);
-  cmd->add_option("--warmup", o->warmup, "Untimed scans first (track initiation)")
-      ->default_val(20);
+  cmd->add_option("--warmup", o->warmup, "Untimed scans first (track initiation)")->default_val(20);
   cmd->add_option("--sensor", o->sensor, "Sensor id of the scans")->default_val(1);
   add_dds_options(*cmd, o->dds);
   cmd->callback([o, &exit_code] { exit_code = run_bench(*o); });
