@@ -13,6 +13,7 @@
 
 #include "process_helpers.hpp"
 #include "skytrack/daemon/dds_session.hpp"
+#include "skytrack/daemon/tsan_suppressions.hpp"
 #include "skytrack/dds/conversion.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
 

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "skytrack/daemon/tsan_suppressions.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"skytrack - radar track processing: simulate, track and evaluate"};

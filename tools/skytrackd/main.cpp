@@ -13,6 +13,7 @@
 #include "skytrack/daemon/logging.hpp"
 #include "skytrack/daemon/signal_pipe.hpp"
 #include "skytrack/daemon/systemd_notify.hpp"
+#include "skytrack/daemon/tsan_suppressions.hpp"
 
 namespace {
 
