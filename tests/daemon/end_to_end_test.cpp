@@ -49,12 +49,13 @@ class EndToEnd : public ::testing::Test {
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   /// A daemon configuration on this test's domain; `extra` goes into the skytrackd section.
-  std::string write_config(const std::string& profile, const std::string& extra = "") const {
+  std::string write_config(const std::string& profile, const std::string& extra = "",
+                           const std::string& queue = "{capacity: 256}") const {
     const std::string file = path("skytrackd.yaml");
     std::ofstream(file) << "skytrackd: {instance: e2e, profile: " << profile
                         << ", status_period: 0.2" << extra << "}\n"
                         << "dds: {domain: " << domain_ << ", qos: {status: {deadline: 1.0}}}\n"
-                        << "queue: {capacity: 256}\n";
+                        << "queue: " << queue << "\n";
     return file;
   }
 
@@ -304,6 +305,35 @@ TEST_F(EndToEnd, BadSamplesAreCountedAndTheGoodScansTracksAreUnchanged) {
   // ... and the tracks are those of the clean stream
   expect_same_tracks(read_tracks(path("live.tracks.jsonl")),
                      read_tracks(path("offline.tracks.jsonl")));
+}
+
+TEST_F(EndToEnd, OverloadDropsAreCountedAndTheNewestScanIsTracked) {
+  // GIVEN skytrackd with a queue of 2 scans (drop oldest) and a replay allowed 64 scans in
+  // flight, far more than the tracker can take at once
+  simulate_and_track_offline();
+  const std::string config = write_config(kProfile, "", "{capacity: 2, overload: drop_oldest}");
+  Child daemon({kDaemon, "--config", config}, path("daemon.log"));
+  ASSERT_TRUE(daemon.wait_for_log("running", 10s)) << daemon.log();
+  // WHEN the scenario is replayed at max rate
+  ASSERT_EQ(run({kTool, "replay", "--config", config, "--plots", path("plots.jsonl"), "--rate",
+                 "max", "--window", "64", "--quiet"},
+                path("replay.log"), 60s),
+            0)
+      << read_file(path("replay.log"));
+  std::this_thread::sleep_for(500ms);  // the next status covers every scan
+  ASSERT_EQ(run({kTool, "status", "--config", config}, path("status.log")), 0);
+  daemon.signal(SIGTERM);
+  ASSERT_EQ(daemon.wait(5s), 0) << daemon.log();
+  // THEN every scan was either tracked or dropped and counted, and the drops were logged
+  std::map<std::string, std::uint64_t> plots, scans;
+  const auto numbers = status_numbers(read_file(path("status.log")), plots, scans);
+  const auto sent = static_cast<double>(read_tracks(path("offline.tracks.jsonl")).size());
+  EXPECT_EQ(numbers.at("scans_processed") + numbers.at("scans_dropped"), sent);
+  EXPECT_GT(numbers.at("scans_dropped"), 0.0);
+  EXPECT_TRUE(scans.empty());
+  EXPECT_THAT(daemon.log(), HasSubstr("overload (drop_oldest, queue of 2): dropped"));
+  // the last scan is never the one dropped, so its TrackBatch answered every scan sent
+  EXPECT_THAT(read_file(path("replay.log")), HasSubstr("0 scans unanswered"));
 }
 
 TEST_F(EndToEnd, SighupReloadsAValidProfileAndKeepsTheOldOneOtherwise) {

@@ -20,8 +20,6 @@ class ProgressBar {
     const int filled = percent * 30 / 100;
     fmt::print(stderr, "\r[{:<30}] {:3d}%  {} {}", std::string(filled, '#'), percent, count, unit_);
   }
-  /// Starts a new pass (replay --loop).
-  void restart() { last_ = -1; }
   void finish() {
     if (enabled_ && last_ >= 0) fmt::print(stderr, "\n");
     last_ = -1;
