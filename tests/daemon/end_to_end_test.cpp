@@ -151,13 +151,21 @@ TEST_F(EndToEnd, ReplayAtMaxRateRecordsTheOfflineTracks) {
             0)
       << read_file(path("replay.log"));
   ASSERT_EQ(record.wait(30s), 0) << record.log();
+  // AND a display that joins late (transient-local tracks) ...
+  ASSERT_EQ(run({kTool, "record", "--config", config, "--tracks", path("late.tracks.jsonl"),
+                 "--until-idle", "0.5"},
+                path("late.log"), 30s),
+            0)
+      << read_file(path("late.log"));
   daemon.signal(SIGTERM);
   ASSERT_EQ(daemon.wait(5s), 0) << daemon.log();
 
   // THEN the recorded tracks are the offline ones
   EXPECT_THAT(read_file(path("replay.log")), HasSubstr("0 scans unanswered"));
-  expect_same_tracks(read_tracks(path("live.tracks.jsonl")),
-                     read_tracks(path("offline.tracks.jsonl")));
+  const auto offline = read_tracks(path("offline.tracks.jsonl"));
+  expect_same_tracks(read_tracks(path("live.tracks.jsonl")), offline);
+  // ... and the late display received the current picture: the last scan's tracks
+  expect_same_tracks(read_tracks(path("late.tracks.jsonl")), {offline.back()});
   EXPECT_THAT(daemon.log(), HasSubstr("config/dds/loopback.xml"));
 }
 
