@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -9,6 +10,7 @@
 #include <optional>
 #include <thread>
 #include <utility>
+#include <vector>
 
 #include "skytrack/config/profile_loader.hpp"
 #include "skytrack/daemon/dds_session.hpp"
@@ -64,6 +66,9 @@ struct Daemon::Impl {
 
   void receive_loop();
   void receive_batch();
+  /// The scan in a sample, or nullopt when it is rejected (counted and logged).
+  std::optional<QueuedScan> convert(const skytrack_dds_PlotBatch& batch,
+                                    Clock::time_point received);
   void track_loop();
   void track_one(QueuedScan& item);
   void apply_pending_profile();
@@ -82,7 +87,11 @@ struct Daemon::Impl {
   ScanQueue queue;
   StatusCollector status;
   EdgeValidator validator;  // tracking thread only
-  PlotScan scratch;
+  struct Arrival {
+    dds_time_t written = 0;  // source timestamp
+    QueuedScan item;
+  };
+  std::vector<Arrival> arrivals;  // reception thread only
 
   std::mutex pending_mutex;
   std::optional<Pipeline> pending;  // a reloaded pipeline, applied before the next scan
@@ -101,7 +110,7 @@ struct Daemon::Impl {
 
 namespace {
 
-constexpr std::size_t kTakeBatch = 16;
+constexpr std::size_t kTakeBatch = 32;
 
 }  // namespace
 
@@ -122,49 +131,66 @@ void Daemon::Impl::receive_loop() {
 }
 
 void Daemon::Impl::receive_batch() {
+  // Take everything available, then restore the order the samples were written in: a take
+  // returns samples grouped by instance (sensor), which would reorder the sensors' scans
+  // against each other and so change what the shared tracker sees.
+  arrivals.clear();
   std::array<void*, kTakeBatch> samples{};
   std::array<dds_sample_info_t, kTakeBatch> infos{};
-  const dds_return_t n = dds_take(plots_reader, samples.data(), infos.data(), kTakeBatch,
-                                  static_cast<std::uint32_t>(kTakeBatch));
-  if (n <= 0) return;
   const Clock::time_point received = Clock::now();
-  for (dds_return_t i = 0; i < n; ++i) {
-    if (!infos[static_cast<std::size_t>(i)].valid_data) continue;  // dispose / unregister
-    const auto& batch =
-        *static_cast<const skytrack_dds_PlotBatch*>(samples[static_cast<std::size_t>(i)]);
-    std::string_view reject;
-    std::string detail;
-    QueuedScan item{{}, received};
-    if (batch.plot_ids._length > static_cast<std::uint32_t>(config.max_plots_per_scan)) {
-      reject = reason::kTooManyPlots;
-      detail = std::to_string(batch.plot_ids._length) + " plots, at most " +
-               std::to_string(config.max_plots_per_scan);
-    } else if (auto ok = dds::from_dds(batch, item.scan); !ok) {
-      reject = reason::kMalformedSample;
-      detail = ok.error().message;
-    }
-    if (!reject.empty()) {
-      status.scan_rejected(reject);
-      if (const auto count = bad_sample_log.allow()) {
-        spdlog::warn(
-            "plot batch of sensor {} scan {} rejected: {}: {} ({} rejected since last "
-            "message)",
-            batch.sensor, batch.scan, reject, detail, *count);
+  for (;;) {
+    const dds_return_t n = dds_take(plots_reader, samples.data(), infos.data(), kTakeBatch,
+                                    static_cast<std::uint32_t>(kTakeBatch));
+    if (n <= 0) break;
+    for (dds_return_t i = 0; i < n; ++i) {
+      const dds_sample_info_t& info = infos[static_cast<std::size_t>(i)];
+      if (!info.valid_data) continue;  // dispose / unregister
+      if (auto item = convert(
+              *static_cast<const skytrack_dds_PlotBatch*>(samples[static_cast<std::size_t>(i)]),
+              received)) {
+        arrivals.push_back({info.source_timestamp, std::move(*item)});
       }
-      continue;
     }
-    if (auto dropped = queue.push(std::move(item))) {
-      const std::uint64_t total = status.scan_dropped();
-      if (const auto count = drop_log.allow()) {
-        spdlog::warn(
-            "overload ({}, queue of {}): dropped sensor {} scan {}; {} dropped since last "
-            "message, {} in all",
-            to_string(config.queue.overload), queue.capacity(), dropped->scan.sensor,
-            dropped->scan.scan, *count, total);
-      }
+    dds_return_loan(plots_reader, samples.data(), n);
+    if (static_cast<std::size_t>(n) < kTakeBatch) break;
+  }
+  std::stable_sort(arrivals.begin(), arrivals.end(),
+                   [](const Arrival& a, const Arrival& b) { return a.written < b.written; });
+  for (Arrival& arrival : arrivals) {
+    auto dropped = queue.push(std::move(arrival.item));
+    if (!dropped) continue;
+    const std::uint64_t total = status.scan_dropped();
+    if (const auto count = drop_log.allow()) {
+      spdlog::warn(
+          "overload ({}, queue of {}): dropped sensor {} scan {}; {} dropped since last "
+          "message, {} in all",
+          to_string(config.queue.overload), queue.capacity(), dropped->scan.sensor,
+          dropped->scan.scan, *count, total);
     }
   }
-  dds_return_loan(plots_reader, samples.data(), n);
+}
+
+std::optional<QueuedScan> Daemon::Impl::convert(const skytrack_dds_PlotBatch& batch,
+                                                Clock::time_point received) {
+  std::string_view reject;
+  std::string detail;
+  QueuedScan item{{}, received};
+  if (batch.plot_ids._length > static_cast<std::uint32_t>(config.max_plots_per_scan)) {
+    reject = reason::kTooManyPlots;
+    detail = std::to_string(batch.plot_ids._length) + " plots, at most " +
+             std::to_string(config.max_plots_per_scan);
+  } else if (auto ok = dds::from_dds(batch, item.scan); !ok) {
+    reject = reason::kMalformedSample;
+    detail = ok.error().message;
+  }
+  if (reject.empty()) return item;
+  status.scan_rejected(reject);
+  if (const auto count = bad_sample_log.allow()) {
+    spdlog::warn(
+        "plot batch of sensor {} scan {} rejected: {}: {} ({} rejected since last message)",
+        batch.sensor, batch.scan, reject, detail, *count);
+  }
+  return std::nullopt;
 }
 
 void Daemon::Impl::apply_pending_profile() {

@@ -16,6 +16,7 @@
 #include "skytrack/daemon/tsan_suppressions.hpp"
 #include "skytrack/dds/conversion.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
+#include "skytrack/io/jsonl_writer.hpp"
 
 namespace skytrack::test {
 namespace {
@@ -167,6 +168,59 @@ TEST_F(EndToEnd, ReplayAtMaxRateRecordsTheOfflineTracks) {
   // ... and the late display received the current picture: the last scan's tracks
   expect_same_tracks(read_tracks(path("late.tracks.jsonl")), {offline.back()});
   EXPECT_THAT(daemon.log(), HasSubstr("config/dds/loopback.xml"));
+}
+
+TEST_F(EndToEnd, TwoSensorsOnOnePlotTopicGiveTheOfflineTracks) {
+  // GIVEN the two-sensor fusion scenario merged into one stream in time order (sensors 1 and
+  // 2, one scan each per second), tracked offline
+  for (const char* name : {"paper004_fusion_merge", "paper004_fusion_merge_sensor2"}) {
+    ASSERT_EQ(run({kTool, "simulate", "--scenario", kSource + "/config/scenarios/" + name + ".yaml",
+                   "--plots", path(std::string(name) + ".plots.jsonl"), "--truth",
+                   path(std::string(name) + ".truth.jsonl")},
+                  path("simulate.log")),
+              0)
+        << read_file(path("simulate.log"));
+  }
+  std::vector<PlotScan> merged;
+  for (const char* name : {"paper004_fusion_merge", "paper004_fusion_merge_sensor2"}) {
+    auto reader = io::PlotStreamReader::open(path(std::string(name) + ".plots.jsonl"));
+    ASSERT_TRUE(reader);
+    while (auto scan = reader->next()) merged.push_back(std::move(*scan));
+  }
+  std::stable_sort(merged.begin(), merged.end(), [](const PlotScan& a, const PlotScan& b) {
+    return a.time < b.time || (a.time == b.time && a.sensor < b.sensor);
+  });
+  {
+    auto writer = io::JsonLinesWriter::open(path("plots.jsonl"));
+    ASSERT_TRUE(writer);
+    for (const auto& scan : merged) ASSERT_TRUE(writer->write(scan));
+    ASSERT_TRUE(writer->close());
+  }
+  ASSERT_EQ(run({kTool, "track", "--profile", kProfile, "--plots", path("plots.jsonl"), "--out",
+                 path("offline.tracks.jsonl"), "--quiet"},
+                path("track.log")),
+            0);
+  const std::string config = write_config(kProfile, ", sensors: [1, 2]");
+  Child daemon({kDaemon, "--config", config}, path("daemon.log"));
+  ASSERT_TRUE(daemon.wait_for_log("running", 10s)) << daemon.log();
+  Child record({kTool, "record", "--config", config, "--tracks", path("live.tracks.jsonl"),
+                "--until-idle", "1.5"},
+               path("record.log"));
+  ASSERT_TRUE(record.wait_for_log("matched a TrackBatch writer", 10s)) << record.log();
+  // WHEN it is replayed at max rate
+  ASSERT_EQ(run({kTool, "replay", "--config", config, "--plots", path("plots.jsonl"), "--rate",
+                 "max", "--quiet"},
+                path("replay.log"), 60s),
+            0)
+      << read_file(path("replay.log"));
+  ASSERT_EQ(record.wait(30s), 0) << record.log();
+  daemon.signal(SIGTERM);
+  ASSERT_EQ(daemon.wait(5s), 0) << daemon.log();
+  // THEN both sensors' scans were tracked as offline, one TrackBatch per scan
+  const auto live = read_tracks(path("live.tracks.jsonl"));
+  EXPECT_EQ(live.size(), merged.size());
+  EXPECT_TRUE(std::any_of(live.begin(), live.end(), [](const auto& f) { return f.sensor == 2; }));
+  expect_same_tracks(live, read_tracks(path("offline.tracks.jsonl")));
 }
 
 /// Publishes samples straight onto the plot topic, so that values a JSON file cannot carry

@@ -1,10 +1,13 @@
 // `skytrack record`: subscribes to TrackBatch (and optionally PlotBatch) and writes the
 // CONTRACTS JSON Lines, so a live session can be evaluated with `skytrack eval` and replayed.
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -27,27 +30,36 @@ struct RecordOptions {
   bool quiet = false;
 };
 
-/// Takes every sample of `reader`, converts and writes it; returns the number written.
+/// Takes every sample of `reader`, converts it and writes it in the order the samples were
+/// written (a take groups samples by instance, i.e. by sensor); returns the number written.
 template <class DdsType, class Convert>
 std::size_t drain(dds_entity_t reader, io::JsonLinesWriter& out, std::size_t& failed,
                   Convert convert) {
+  using Record = typename decltype(convert(std::declval<const DdsType&>()))::value_type;
+  std::vector<std::pair<dds_time_t, Record>> records;
   std::array<void*, 32> samples{};
   std::array<dds_sample_info_t, 32> infos{};
-  std::size_t written = 0;
   for (;;) {
     const dds_return_t n = dds_take(reader, samples.data(), infos.data(), 32, 32);
-    if (n <= 0) return written;
+    if (n <= 0) break;
     for (dds_return_t i = 0; i < n; ++i) {
-      if (!infos[static_cast<std::size_t>(i)].valid_data) continue;
+      const dds_sample_info_t& info = infos[static_cast<std::size_t>(i)];
+      if (!info.valid_data) continue;
       auto record = convert(*static_cast<const DdsType*>(samples[static_cast<std::size_t>(i)]));
       if (!record) {
         if (failed++ < 20) fmt::print(stderr, "skytrack record: {}\n", record.error().message);
         continue;
       }
-      if (out.write(*record)) ++written;
+      records.emplace_back(info.source_timestamp, std::move(*record));
     }
     dds_return_loan(reader, samples.data(), n);
+    if (n < 32) break;
   }
+  std::stable_sort(records.begin(), records.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::size_t written = 0;
+  for (const auto& [when, record] : records) written += out.write(record) ? 1 : 0;
+  return written;
 }
 
 int run_record(const RecordOptions& options) {
