@@ -62,101 +62,90 @@ std::size_t drain(dds_entity_t reader, io::JsonLinesWriter& out, std::size_t& fa
   return written;
 }
 
+/// The subscription loop: drains the readers until interrupted or idle.
+struct Recorder {
+  const RecordOptions& options;
+  dds_entity_t tracks = 0;
+  dds_entity_t plots = 0;  // 0: plots not recorded
+  io::JsonLinesWriter& track_out;
+  io::JsonLinesWriter* plot_out = nullptr;
+  std::size_t frames = 0, scans = 0, failed = 0;
+
+  void run(dds_entity_t waitset) {
+    bool matched = false;
+    std::optional<Clock::time_point> last_data;
+    const auto idle = std::chrono::duration<double>(options.until_idle);
+    while (!stop_requested()) {
+      dds_waitset_wait(waitset, nullptr, 0, DDS_MSECS(100));
+      if (!matched) {
+        dds_subscription_matched_status_t m{};
+        dds_get_subscription_matched_status(tracks, &m);
+        matched = m.current_count > 0;
+        if (matched && !options.quiet) {
+          fmt::print(stderr, "skytrack record: matched a TrackBatch writer\n");
+        }
+      }
+      std::size_t got = drain<skytrack_dds_TrackBatch>(
+          tracks, track_out, failed, [](const auto& b) { return dds::from_dds(b); });
+      frames += got;
+      if (plots > 0) {
+        const std::size_t p = drain<skytrack_dds_PlotBatch>(
+            plots, *plot_out, failed, [](const auto& b) { return dds::from_dds(b); });
+        scans += p;
+        got += p;
+      }
+      const auto now = Clock::now();
+      if (got > 0) last_data = now;
+      if (options.until_idle > 0.0 && last_data && now - *last_data > idle) break;
+    }
+  }
+};
+
+int fail(const std::string& message) {
+  fmt::print(stderr, "skytrack record: {}\n", message);
+  return 2;
+}
+
 int run_record(const RecordOptions& options) {
   auto config = resolve_dds_tool_config(options.dds);
-  if (!config) {
-    fmt::print(stderr, "{}\n", config.error().message);
-    return 2;
-  }
+  if (!config) return fail(config.error().message);
   install_stop_handlers();
   auto track_out = io::JsonLinesWriter::open(options.tracks);
-  if (!track_out) {
-    fmt::print(stderr, "skytrack record: {}\n", track_out.error().message);
-    return 2;
-  }
+  if (!track_out) return fail(track_out.error().message);
   std::optional<io::JsonLinesWriter> plot_out;
   if (!options.plots.empty()) {
     auto w = io::JsonLinesWriter::open(options.plots);
-    if (!w) {
-      fmt::print(stderr, "skytrack record: {}\n", w.error().message);
-      return 2;
-    }
+    if (!w) return fail(w.error().message);
     plot_out.emplace(std::move(*w));
   }
   auto session = daemon::DdsSession::open(config->dds);
-  if (!session) {
-    fmt::print(stderr, "skytrack record: {}\n", session.error().message);
-    return 2;
-  }
+  if (!session) return fail(session.error().message);
   const auto& dds = config->dds;
-  auto tracks_topic = session->topic(&skytrack_dds_TrackBatch_desc, dds.topics.tracks);
-  if (!tracks_topic) {
-    fmt::print(stderr, "skytrack record: {}\n", tracks_topic.error().message);
-    return 2;
-  }
-  auto tracks = session->reader(*tracks_topic, daemon::tracks_reader_qos(dds, true).get());
-  if (!tracks) {
-    fmt::print(stderr, "skytrack record: {}\n", tracks.error().message);
-    return 2;
-  }
-  dds_entity_t plots = 0;
-  if (plot_out) {
-    auto plots_topic = session->topic(&skytrack_dds_PlotBatch_desc, dds.topics.plots);
-    Expected<dds_entity_t> r = unexpected(Error{});
-    if (plots_topic) {
-      r = session->reader(*plots_topic, daemon::plots_reader_qos(dds).get());
-    } else {
-      r = unexpected(plots_topic.error());
-    }
-    if (!r) {
-      fmt::print(stderr, "skytrack record: {}\n", r.error().message);
-      return 2;
-    }
-    plots = *r;
-  }
+  auto tracks = open_reader(*session, &skytrack_dds_TrackBatch_desc, dds.topics.tracks,
+                            daemon::tracks_reader_qos(dds, true).get());
+  if (!tracks) return fail(tracks.error().message);
+  Recorder recorder{options, *tracks, 0, *track_out};
   const dds_entity_t waitset = dds_create_waitset(session->participant());
   dds_waitset_attach(waitset, dds_create_readcondition(*tracks, DDS_ANY_STATE), 0);
-  if (plots > 0) dds_waitset_attach(waitset, dds_create_readcondition(plots, DDS_ANY_STATE), 0);
+  if (plot_out) {
+    auto plots = open_reader(*session, &skytrack_dds_PlotBatch_desc, dds.topics.plots,
+                             daemon::plots_reader_qos(dds).get());
+    if (!plots) return fail(plots.error().message);
+    recorder.plots = *plots;
+    recorder.plot_out = &*plot_out;
+    dds_waitset_attach(waitset, dds_create_readcondition(*plots, DDS_ANY_STATE), 0);
+  }
   if (!options.quiet) {
     fmt::print(stderr, "skytrack record: recording '{}'{} on domain {}\n", dds.topics.tracks,
-               plots > 0 ? " and '" + dds.topics.plots + "'" : std::string(), dds.domain);
+               plot_out ? " and '" + dds.topics.plots + "'" : std::string(), dds.domain);
   }
-  bool matched = false;
-  std::size_t frames = 0, scans = 0, failed = 0;
-  std::optional<Clock::time_point> last_data;
-  const auto idle = std::chrono::duration<double>(options.until_idle);
-  while (!stop_requested()) {
-    dds_waitset_wait(waitset, nullptr, 0, DDS_MSECS(100));
-    if (!matched) {
-      dds_subscription_matched_status_t m{};
-      dds_get_subscription_matched_status(*tracks, &m);
-      if (m.current_count > 0) {
-        matched = true;
-        if (!options.quiet) fmt::print(stderr, "skytrack record: matched a TrackBatch writer\n");
-      }
-    }
-    std::size_t got = drain<skytrack_dds_TrackBatch>(
-        *tracks, *track_out, failed, [](const auto& b) { return dds::from_dds(b); });
-    frames += got;
-    if (plots > 0) {
-      const std::size_t p = drain<skytrack_dds_PlotBatch>(
-          plots, *plot_out, failed, [](const auto& b) { return dds::from_dds(b); });
-      scans += p;
-      got += p;
-    }
-    const auto now = Clock::now();
-    if (got > 0) last_data = now;
-    if (options.until_idle > 0.0 && last_data && now - *last_data > idle) break;
-  }
+  recorder.run(waitset);
   const bool ok = track_out->close() && (!plot_out || plot_out->close());
-  fmt::print(stderr, "skytrack record: {} track batches{} written{}\n", frames,
-             plot_out ? fmt::format(", {} plot batches", scans) : std::string(),
-             failed ? fmt::format(", {} samples not convertible", failed) : std::string());
-  if (!ok) {
-    fmt::print(stderr, "skytrack record: writing the output failed\n");
-    return 2;
-  }
-  return 0;
+  fmt::print(stderr, "skytrack record: {} track batches{} written{}\n", recorder.frames,
+             plot_out ? fmt::format(", {} plot batches", recorder.scans) : std::string(),
+             recorder.failed ? fmt::format(", {} samples not convertible", recorder.failed)
+                             : std::string());
+  return ok ? 0 : fail("writing the output failed");
 }
 
 }  // namespace

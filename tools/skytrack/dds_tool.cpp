@@ -32,6 +32,14 @@ Expected<daemon::DaemonConfig> resolve_dds_tool_config(const DdsToolOptions& opt
   return config;
 }
 
+Expected<dds_entity_t> open_reader(daemon::DdsSession& session,
+                                   const dds_topic_descriptor_t* descriptor,
+                                   const std::string& name, const dds_qos_t* qos) {
+  auto topic = session.topic(descriptor, name);
+  if (!topic) return unexpected(topic.error());
+  return session.reader(*topic, qos);
+}
+
 void install_stop_handlers() {
   struct sigaction action {};
   action.sa_handler = on_stop_signal;

@@ -9,6 +9,7 @@
 
 #include "skytrack/core/expected.hpp"
 #include "skytrack/daemon/daemon_config.hpp"
+#include "skytrack/daemon/dds_session.hpp"
 
 namespace skytrack::tool {
 
@@ -24,6 +25,11 @@ struct DdsToolOptions {
 void add_dds_options(CLI::App& cmd, DdsToolOptions& options);
 /// The configuration with --domain applied; prints the error and returns nullopt-like failure.
 Expected<daemon::DaemonConfig> resolve_dds_tool_config(const DdsToolOptions& options);
+
+/// A reader on topic `name` of type `descriptor`, created in `session`.
+Expected<dds_entity_t> open_reader(daemon::DdsSession& session,
+                                   const dds_topic_descriptor_t* descriptor,
+                                   const std::string& name, const dds_qos_t* qos);
 
 /// Installs SIGINT/SIGTERM handlers that set stop_requested().
 void install_stop_handlers();
