@@ -99,6 +99,14 @@ int run_status(const StatusOptions& options) {
       latest[report->instance] = std::move(*report);
     }
     if (n > 0) dds_return_loan(*reader, samples.data(), n);
+    dds_requested_deadline_missed_status_t missed{};
+    if (options.follow > 0.0 &&
+        dds_get_requested_deadline_missed_status(*reader, &missed) == DDS_RETCODE_OK &&
+        missed.total_count_change > 0) {
+      fmt::print(stderr,
+                 "skytrack status: deadline missed: no TrackerStatus for {} s ({} in all)\n",
+                 config->dds.status.deadline, missed.total_count);
+    }
     std::fflush(stdout);
     const auto elapsed = Clock::now() - start;
     if (options.follow > 0.0 ? elapsed > follow : (!latest.empty() || elapsed > wait)) break;
@@ -122,7 +130,8 @@ void add_status_command(CLI::App& app, int& exit_code) {
       app.add_subcommand("status", "Print the running daemons' latest TrackerStatus as JSON (DDS)");
   cmd->add_option("--wait", options->wait, "Seconds to wait for a status")->default_val(5.0);
   cmd->add_option("--follow", options->follow,
-                  "Print every status sample for this many seconds instead");
+                  "Print every status sample for this many seconds instead, and each missed "
+                  "deadline (a daemon gone quiet)");
   add_dds_options(*cmd, options->dds);
   cmd->callback([options, &exit_code] { exit_code = run_status(*options); });
 }
