@@ -1,17 +1,65 @@
 #!/usr/bin/env bash
-# The README's first command: build, simulate the shipped default scenario, track it with the
-# default profile and evaluate the tracks against the truth. (The daemon joins this chain when
-# it lands: replay over DDS instead of the offline run.)
+# The README's first command: build, simulate the shipped default scenario, start skytrackd on
+# the default profile, replay the scenario into it over DDS (loopback only) at max rate, record
+# the tracks, stop the daemon and evaluate the recorded tracks against the truth.
+# Environment: SKYTRACK_BUILD_DIR (default build/), SKYTRACK_DOMAIN (DDS domain, default 0).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/tools/build.sh"
-skytrack="${SKYTRACK_BUILD_DIR:-$root/build}/tools/skytrack/skytrack"
+build="${SKYTRACK_BUILD_DIR:-$root/build}"
+skytrack="$build/tools/skytrack/skytrack"
+skytrackd="$build/tools/skytrackd/skytrackd"
 out="$root/out"
 mkdir -p "$out"
 scenario="${1:-$root/config/scenarios/default.yaml}"
+
+daemon_pid="" record_pid=""
+cleanup() {
+  local rc=$?
+  for pid in $record_pid $daemon_pid; do kill -KILL "$pid" 2>/dev/null || true; done
+  if [ $rc -ne 0 ]; then
+    echo "run-default: failed; daemon log: $out/skytrackd.log" >&2
+    tail -n 20 "$out/skytrackd.log" >&2 2>/dev/null || true
+  fi
+}
+trap cleanup EXIT
+# Waits up to $3 seconds for file $1 to contain $2 while process $4 lives.
+wait_for() {
+  for _ in $(seq $(($3 * 10))); do
+    grep -q "$2" "$1" 2>/dev/null && return 0
+    kill -0 "$4" 2>/dev/null || return 1
+    sleep 0.1
+  done
+  return 1
+}
+
+# The shipped daemon configuration, on the chosen domain.
+sed -e "s|^  domain: 0|  domain: ${SKYTRACK_DOMAIN:-0}|" \
+  -e "s|profile: profiles/default.yaml|profile: $root/config/profiles/default.yaml|" \
+  "$root/config/skytrackd.yaml" >"$out/skytrackd.yaml"
+
 "$skytrack" simulate --scenario "$scenario" --plots "$out/default.plots.jsonl" \
   --truth "$out/default.truth.jsonl"
-"$skytrack" track --plots "$out/default.plots.jsonl" --out "$out/default.tracks.jsonl" --quiet
+"$skytrackd" --config "$out/skytrackd.yaml" >"$out/skytrackd.log" 2>&1 &
+daemon_pid=$!
+wait_for "$out/skytrackd.log" "running" 15 "$daemon_pid" || { echo "skytrackd did not start" >&2; exit 1; }
+grep -m1 "DDS:" "$out/skytrackd.log"
+timeout 120 "$skytrack" record --config "$out/skytrackd.yaml" --tracks "$out/default.tracks.jsonl" \
+  --until-idle 2 >"$out/record.log" 2>&1 &
+record_pid=$!
+wait_for "$out/record.log" "matched a TrackBatch writer" 15 "$record_pid" ||
+  { echo "record did not match the daemon" >&2; exit 1; }
+timeout 120 "$skytrack" replay --config "$out/skytrackd.yaml" --plots "$out/default.plots.jsonl" --rate max
+wait "$record_pid"
+record_pid=""
+cat "$out/record.log" | tail -n 1
+echo "daemon status:"
+"$skytrack" status --config "$out/skytrackd.yaml"
+kill -TERM "$daemon_pid"
+for _ in $(seq 50); do kill -0 "$daemon_pid" 2>/dev/null || break; sleep 0.1; done
+wait "$daemon_pid"
+daemon_pid=""
+echo "skytrackd stopped"
 # Cut-off 500 m: a few times the height error of a 3 mrad elevation at 40-60 km.
 "$skytrack" eval --truth "$out/default.truth.jsonl" --tracks "$out/default.tracks.jsonl" \
   --cutoff 500 --plot "$out/default.svg"

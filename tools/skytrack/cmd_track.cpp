@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "progress_bar.hpp"
 #include "skytrack/config/profile_loader.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
 #include "skytrack/io/jsonl_writer.hpp"
@@ -33,26 +34,6 @@ double peak_rss_mib() {
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
-
-class ProgressBar {
- public:
-  explicit ProgressBar(bool enabled) : enabled_(enabled) {}
-  void update(std::size_t done, std::size_t total, std::size_t scans) {
-    if (!enabled_ || total == 0) return;
-    const int percent = static_cast<int>(100.0 * static_cast<double>(done) / total);
-    if (percent == last_) return;
-    last_ = percent;
-    const int filled = percent * 30 / 100;
-    fmt::print(stderr, "\r[{:<30}] {:3d}%  {} batches", std::string(filled, '#'), percent, scans);
-  }
-  void finish() {
-    if (enabled_ && last_ >= 0) fmt::print(stderr, "\n");
-  }
-
- private:
-  bool enabled_;
-  int last_ = -1;
-};
 
 double mean(const std::vector<double>& values) {
   double sum = 0.0;

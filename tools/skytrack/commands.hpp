@@ -9,5 +9,9 @@ void add_simulate_command(CLI::App& app, int& exit_code);
 void add_eval_command(CLI::App& app, int& exit_code);
 void add_check_profile_command(CLI::App& app, int& exit_code);
 void add_track_command(CLI::App& app, int& exit_code);
+void add_replay_command(CLI::App& app, int& exit_code);
+void add_record_command(CLI::App& app, int& exit_code);
+void add_status_command(CLI::App& app, int& exit_code);
+void add_bench_latency_command(CLI::App& app, int& exit_code);
 
 }  // namespace skytrack::tool

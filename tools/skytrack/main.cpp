@@ -1,7 +1,9 @@
-// skytrack: the command-line tool (simulate, track, eval, check-profile).
+// skytrack: the command-line tool (simulate, track, eval, check-profile; replay, record and
+// status over DDS).
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "skytrack/daemon/tsan_suppressions.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"skytrack - radar track processing: simulate, track and evaluate"};
@@ -11,6 +13,10 @@ int main(int argc, char** argv) {
   skytrack::tool::add_eval_command(app, exit_code);
   skytrack::tool::add_check_profile_command(app, exit_code);
   skytrack::tool::add_track_command(app, exit_code);
+  skytrack::tool::add_replay_command(app, exit_code);
+  skytrack::tool::add_record_command(app, exit_code);
+  skytrack::tool::add_status_command(app, exit_code);
+  skytrack::tool::add_bench_latency_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
 }

@@ -1,0 +1,42 @@
+#pragma once
+// The daemon's counters, shared by the reception thread (drops, malformed samples), the
+// tracker thread (processed and rejected scans, latency) and the status publisher. Every
+// member function locks; snapshot() fills a TrackerStatusReport.
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <string>
+#include <string_view>
+
+#include "skytrack/core/track_report.hpp"
+#include "skytrack/core/tracker_status.hpp"
+#include "skytrack/daemon/latency_stats.hpp"
+
+namespace skytrack::daemon {
+
+class StatusCollector {
+ public:
+  StatusCollector(std::string instance, std::size_t latency_window = 1024);
+
+  void set_profile(const std::string& name, const std::string& version);
+  void scan_rejected(std::string_view reason);
+  void plots_rejected(std::string_view reason, std::uint64_t count);
+  /// Returns the number of drops so far (for rate-limited logging).
+  std::uint64_t scan_dropped();
+  /// A scan went through the tracker: `plots` in it, `latency` [s] from reception to
+  /// publication, and the track picture it left.
+  void scan_processed(std::uint64_t plots, double latency, const TrackFrame& frame);
+
+  TrackerStatusReport snapshot(std::uint32_t queue_depth) const;
+
+ private:
+  mutable std::mutex mutex_;
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  TrackerStatusReport report_;
+  std::map<std::string, std::uint64_t, std::less<>> plots_rejected_;
+  std::map<std::string, std::uint64_t, std::less<>> scans_rejected_;
+  LatencyStats latency_;
+};
+
+}  // namespace skytrack::daemon

@@ -1,0 +1,378 @@
+#include "skytrack/daemon/daemon.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+#include <vector>
+
+#include "skytrack/config/profile_loader.hpp"
+#include "skytrack/daemon/dds_session.hpp"
+#include "skytrack/daemon/edge_validator.hpp"
+#include "skytrack/daemon/rate_limiter.hpp"
+#include "skytrack/daemon/scan_queue.hpp"
+#include "skytrack/daemon/status_collector.hpp"
+#include "skytrack/dds/conversion.hpp"
+#include "skytrack/pipeline/pipeline.hpp"
+
+namespace skytrack::daemon {
+
+using Clock = std::chrono::steady_clock;
+
+Expected<config::TrackingProfile> load_tracking_profile(const std::string& path) {
+  if (path.empty()) {
+    config::TrackingProfile profile;
+    profile.identity = {"default", "1", "built-in default point-tracking profile"};
+    return profile;
+  }
+  return config::load_profile(path);
+}
+
+std::string restart_reason(const config::TrackingProfile& a, const config::TrackingProfile& b) {
+  std::string out;
+  const auto differs = [&out](bool same, const char* section) {
+    if (!same) out += (out.empty() ? "" : ", ") + std::string(section);
+  };
+  differs(a.mode == b.mode, "mode");
+  differs(a.dimension == b.dimension, "dimension");
+  differs(a.measurement == b.measurement, "measurement");
+  differs(a.motion_models == b.motion_models, "motion_models");
+  differs(a.mode_transition == b.mode_transition, "mode_transition");
+  differs(a.initial_mode_probabilities == b.initial_mode_probabilities,
+          "initial_mode_probabilities");
+  differs(a.association == b.association, "association");
+  differs(a.clutter_rejection == b.clutter_rejection, "clutter_rejection");
+  differs(a.initiation == b.initiation, "initiation");
+  differs(a.track_life == b.track_life, "track_life");
+  differs(a.branching == b.branching, "branching");
+  return out;
+}
+
+struct Daemon::Impl {
+  Impl(const DaemonConfig& c, config::TrackingProfile p, Pipeline pipe, DdsSession s)
+      : config(c),
+        profile(std::move(p)),
+        pipeline(std::move(pipe)),
+        session(std::move(s)),
+        queue(static_cast<std::size_t>(c.queue.capacity), c.queue.overload),
+        status(c.instance),
+        validator(c.sensors) {}
+
+  void receive_loop();
+  void receive_batch();
+  /// The scan in a sample, or nullopt when it is rejected (counted and logged).
+  std::optional<QueuedScan> convert(const skytrack_dds_PlotBatch& batch,
+                                    Clock::time_point received);
+  void track_loop();
+  void track_one(QueuedScan& item);
+  void apply_pending_profile();
+
+  const DaemonConfig config;
+  config::TrackingProfile profile;  // owner's thread: the profile last applied or requested
+  Pipeline pipeline;                // tracking thread only
+  DdsSession session;
+  dds_entity_t plots_reader = 0;
+  dds_entity_t tracks_writer = 0;
+  dds_entity_t status_writer = 0;
+  dds_entity_t waitset = 0;
+  dds_entity_t readable = 0;
+  dds_entity_t stop_guard = 0;
+
+  ScanQueue queue;
+  StatusCollector status;
+  EdgeValidator validator;  // tracking thread only
+  struct Arrival {
+    dds_time_t written = 0;  // source timestamp
+    QueuedScan item;
+  };
+  std::vector<Arrival> arrivals;  // reception thread only
+
+  std::mutex pending_mutex;
+  std::optional<Pipeline> pending;  // a reloaded pipeline, applied before the next scan
+  bool pending_keeps_tracks = false;
+  config::ProfileIdentity pending_identity;
+
+  std::thread receiver;
+  std::thread tracker;
+  bool running = false;
+
+  RateLimiter drop_log;
+  RateLimiter bad_sample_log;  // reception thread
+  RateLimiter bad_scan_log;    // tracking thread
+  RateLimiter write_log;
+};
+
+namespace {
+
+constexpr std::size_t kTakeBatch = 32;
+
+}  // namespace
+
+void Daemon::Impl::receive_loop() {
+  for (;;) {
+    std::array<dds_attach_t, 2> triggered{};
+    const dds_return_t n =
+        dds_waitset_wait(waitset, triggered.data(), triggered.size(), DDS_INFINITY);
+    if (n < 0) {
+      spdlog::error("plot reception: waitset: {}", dds_strretcode(n));
+      return;
+    }
+    bool stop = false;
+    dds_read_guardcondition(stop_guard, &stop);
+    if (stop) return;
+    receive_batch();
+  }
+}
+
+void Daemon::Impl::receive_batch() {
+  // Take everything available, then restore the order the samples were written in: a take
+  // returns samples grouped by instance (sensor), which would reorder the sensors' scans
+  // against each other and so change what the shared tracker sees.
+  arrivals.clear();
+  std::array<void*, kTakeBatch> samples{};
+  std::array<dds_sample_info_t, kTakeBatch> infos{};
+  const Clock::time_point received = Clock::now();
+  for (;;) {
+    const dds_return_t n = dds_take(plots_reader, samples.data(), infos.data(), kTakeBatch,
+                                    static_cast<std::uint32_t>(kTakeBatch));
+    if (n <= 0) break;
+    for (dds_return_t i = 0; i < n; ++i) {
+      const dds_sample_info_t& info = infos[static_cast<std::size_t>(i)];
+      if (!info.valid_data) continue;  // dispose / unregister
+      if (auto item = convert(
+              *static_cast<const skytrack_dds_PlotBatch*>(samples[static_cast<std::size_t>(i)]),
+              received)) {
+        arrivals.push_back({info.source_timestamp, std::move(*item)});
+      }
+    }
+    dds_return_loan(plots_reader, samples.data(), n);
+    if (static_cast<std::size_t>(n) < kTakeBatch) break;
+  }
+  std::stable_sort(arrivals.begin(), arrivals.end(),
+                   [](const Arrival& a, const Arrival& b) { return a.written < b.written; });
+  for (Arrival& arrival : arrivals) {
+    auto dropped = queue.push(std::move(arrival.item));
+    if (!dropped) continue;
+    const std::uint64_t total = status.scan_dropped();
+    if (const auto count = drop_log.allow()) {
+      spdlog::warn(
+          "overload ({}, queue of {}): dropped sensor {} scan {}; {} dropped since last "
+          "message, {} in all",
+          to_string(config.queue.overload), queue.capacity(), dropped->scan.sensor,
+          dropped->scan.scan, *count, total);
+    }
+  }
+}
+
+std::optional<QueuedScan> Daemon::Impl::convert(const skytrack_dds_PlotBatch& batch,
+                                                Clock::time_point received) {
+  std::string_view reject;
+  std::string detail;
+  QueuedScan item{{}, received};
+  if (batch.plot_ids._length > static_cast<std::uint32_t>(config.max_plots_per_scan)) {
+    reject = reason::kTooManyPlots;
+    detail = std::to_string(batch.plot_ids._length) + " plots, at most " +
+             std::to_string(config.max_plots_per_scan);
+  } else if (auto ok = dds::from_dds(batch, item.scan); !ok) {
+    reject = reason::kMalformedSample;
+    detail = ok.error().message;
+  }
+  if (reject.empty()) return item;
+  status.scan_rejected(reject);
+  if (const auto count = bad_sample_log.allow()) {
+    spdlog::warn(
+        "plot batch of sensor {} scan {} rejected: {}: {} ({} rejected since last message)",
+        batch.sensor, batch.scan, reject, detail, *count);
+  }
+  return std::nullopt;
+}
+
+void Daemon::Impl::apply_pending_profile() {
+  std::lock_guard lock(pending_mutex);
+  if (!pending) return;
+  if (!pending_keeps_tracks) pipeline = std::move(*pending);
+  status.set_profile(pending_identity.name, pending_identity.version);
+  spdlog::info("profile '{}' version {} now in use ({})", pending_identity.name,
+               pending_identity.version, pending_keeps_tracks ? "tracks kept" : "tracks restarted");
+  pending.reset();
+}
+
+void Daemon::Impl::track_one(QueuedScan& item) {
+  const PlotScan& scan = item.scan;
+  if (const auto bad = validator.check(scan)) {
+    status.scan_rejected(*bad);
+    if (const auto count = bad_scan_log.allow()) {
+      spdlog::warn("sensor {} scan {} (t = {}) skipped: {} ({} skipped since last message)",
+                   scan.sensor, scan.scan, scan.time, *bad, *count);
+    }
+    return;
+  }
+  for (const Plot& plot : scan.plots) {
+    if (const auto why = invalid_plot_reason(plot)) status.plots_rejected(*why, 1);
+  }
+  const ScanResult& result = pipeline.process(scan);
+  if (!result.accepted) {
+    status.scan_rejected(reason::kPipelineRejected);
+    spdlog::warn("sensor {} scan {} rejected by the pipeline: {}", scan.sensor, scan.scan,
+                 result.rejection);
+    return;
+  }
+  status.plots_rejected(reason::kClutter,
+                        static_cast<std::uint64_t>(result.report.plots_rejected_clutter));
+  auto sample = dds::to_dds(result.frame);
+  dds_return_t rc = DDS_RETCODE_OK;
+  if (sample) rc = dds_write(tracks_writer, sample->data());
+  if (!sample || rc != DDS_RETCODE_OK) {
+    if (const auto count = write_log.allow()) {
+      spdlog::error("sensor {} scan {}: TrackBatch not published: {} ({} since last message)",
+                    scan.sensor, scan.scan,
+                    sample ? std::string(dds_strretcode(rc)) : sample.error().message, *count);
+    }
+  }
+  const double latency = std::chrono::duration<double>(Clock::now() - item.received).count();
+  status.scan_processed(scan.plots.size(), latency, result.frame);
+  spdlog::debug("sensor {} scan {} t={:.3f}: {} plots, {} tracks, {} initiated, {:.3f} ms",
+                scan.sensor, scan.scan, scan.time, scan.plots.size(), result.frame.tracks.size(),
+                result.report.initiated, latency * 1e3);
+}
+
+void Daemon::Impl::track_loop() {
+  while (auto item = queue.pop()) {
+    apply_pending_profile();
+    track_one(*item);
+  }
+}
+
+Daemon::Daemon(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+
+Expected<std::unique_ptr<Daemon>> Daemon::create(const DaemonConfig& config) {
+  auto profile = load_tracking_profile(config.profile);
+  if (!profile) return unexpected(profile.error());
+  auto pipeline = Pipeline::create(*profile);
+  if (!pipeline) return unexpected(pipeline.error());
+  auto session = DdsSession::open(config.dds);
+  if (!session) return unexpected(session.error());
+  spdlog::info("DDS: {}; domain {}", session->configuration(), config.dds.domain);
+  auto impl = std::make_unique<Impl>(config, std::move(*profile), std::move(*pipeline),
+                                     std::move(*session));
+  Impl& d = *impl;
+  d.status.set_profile(d.profile.identity.name, d.profile.identity.version);
+  const DdsSettings& dds = config.dds;
+  auto plots = d.session.topic(&skytrack_dds_PlotBatch_desc, dds.topics.plots);
+  if (!plots) return unexpected(plots.error());
+  auto tracks = d.session.topic(&skytrack_dds_TrackBatch_desc, dds.topics.tracks);
+  if (!tracks) return unexpected(tracks.error());
+  auto status = d.session.topic(&skytrack_dds_TrackerStatus_desc, dds.topics.status);
+  if (!status) return unexpected(status.error());
+  auto reader = d.session.reader(*plots, plots_reader_qos(dds).get());
+  if (!reader) return unexpected(reader.error());
+  auto tracks_writer = d.session.writer(*tracks, tracks_writer_qos(dds).get());
+  if (!tracks_writer) return unexpected(tracks_writer.error());
+  auto status_writer = d.session.writer(*status, status_writer_qos(dds).get());
+  if (!status_writer) return unexpected(status_writer.error());
+  d.plots_reader = *reader;
+  d.tracks_writer = *tracks_writer;
+  d.status_writer = *status_writer;
+  d.waitset = dds_create_waitset(d.session.participant());
+  d.readable = dds_create_readcondition(d.plots_reader, DDS_ANY_STATE);
+  d.stop_guard = dds_create_guardcondition(d.session.participant());
+  if (d.waitset < 0 || d.readable < 0 || d.stop_guard < 0 ||
+      dds_waitset_attach(d.waitset, d.readable, d.readable) != DDS_RETCODE_OK ||
+      dds_waitset_attach(d.waitset, d.stop_guard, d.stop_guard) != DDS_RETCODE_OK) {
+    return make_error("creating the reception waitset failed");
+  }
+  spdlog::info(
+      "topics: plots '{}' ({}), tracks '{}' ({}), status '{}' (every {} s, deadline {} s); "
+      "partition '{}'; queue {} scans, {}; profile '{}' version {}",
+      dds.topics.plots, to_string(dds.plots.reliability), dds.topics.tracks,
+      to_string(dds.tracks.durability), dds.topics.status, config.status_period,
+      dds.status.deadline, dds.partitions.empty() ? "" : dds.partitions.front(),
+      config.queue.capacity, to_string(config.queue.overload), d.profile.identity.name,
+      d.profile.identity.version);
+  return std::unique_ptr<Daemon>(new Daemon(std::move(impl)));
+}
+
+Daemon::~Daemon() {
+  if (impl_ && impl_->running) stop();
+}
+
+void Daemon::start() {
+  if (impl_->running) return;
+  impl_->running = true;
+  impl_->tracker = std::thread([this] { impl_->track_loop(); });
+  impl_->receiver = std::thread([this] { impl_->receive_loop(); });
+}
+
+void Daemon::publish_status() {
+  const TrackerStatusReport report =
+      impl_->status.snapshot(static_cast<std::uint32_t>(impl_->queue.size()));
+  auto sample = dds::to_dds(report);
+  if (!sample) {
+    spdlog::error("TrackerStatus not published: {}", sample.error().message);
+    return;
+  }
+  if (const dds_return_t rc = dds_write(impl_->status_writer, sample->data());
+      rc != DDS_RETCODE_OK) {
+    spdlog::error("TrackerStatus not published: {}", dds_strretcode(rc));
+  }
+}
+
+bool Daemon::reload_profile() {
+  Impl& d = *impl_;
+  if (d.config.profile.empty()) {
+    spdlog::warn("SIGHUP: no profile file configured (built-in default); nothing to reload");
+    return false;
+  }
+  auto profile = config::load_profile(d.config.profile);
+  if (!profile) {
+    spdlog::error("SIGHUP: profile {} not reloaded, keeping '{}' version {}:\n{}", d.config.profile,
+                  d.profile.identity.name, d.profile.identity.version, profile.error().message);
+    return false;
+  }
+  auto pipeline = Pipeline::create(*profile);
+  if (!pipeline) {
+    spdlog::error("SIGHUP: profile {} not usable, keeping '{}' version {}: {}", d.config.profile,
+                  d.profile.identity.name, d.profile.identity.version, pipeline.error().message);
+    return false;
+  }
+  const std::string reason = restart_reason(d.profile, *profile);
+  if (reason.empty()) {
+    spdlog::info("SIGHUP: profile '{}' version {}: tracking parameters unchanged, tracks kept",
+                 profile->identity.name, profile->identity.version);
+  } else {
+    spdlog::warn(
+        "SIGHUP: profile '{}' version {} changes {}: the running tracker cannot take new "
+        "parameters on live tracks, so the tracks restart with the next scan",
+        profile->identity.name, profile->identity.version, reason);
+  }
+  {
+    std::lock_guard lock(d.pending_mutex);
+    d.pending_keeps_tracks = reason.empty();
+    d.pending_identity = profile->identity;
+    d.pending.emplace(std::move(*pipeline));
+  }
+  d.profile = std::move(*profile);
+  return true;
+}
+
+void Daemon::stop() {
+  Impl& d = *impl_;
+  if (!d.running) return;
+  d.running = false;
+  dds_set_guardcondition(d.stop_guard, true);
+  d.receiver.join();
+  d.queue.close();  // the tracker finishes the scan in hand, then sees the close
+  d.tracker.join();
+  if (const std::size_t left = d.queue.clear()) {
+    spdlog::warn("stopping: {} queued scans not processed", left);
+  }
+  publish_status();
+}
+
+}  // namespace skytrack::daemon

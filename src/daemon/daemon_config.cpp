@@ -1,0 +1,180 @@
+// Daemon configuration loader: one reader per section, each calling finish() so unknown keys
+// are errors. Schema: docs/daemon.md.
+#include "skytrack/daemon/daemon_config.hpp"
+
+#include <cmath>
+#include <exception>
+#include <filesystem>
+
+#include "skytrack/config/yaml_section.hpp"
+
+namespace skytrack::daemon {
+namespace {
+
+using config::ErrorList;
+using config::Range;
+using config::YamlSection;
+
+std::string resolve(const std::string& path, const std::string& base_dir) {
+  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (std::filesystem::path(base_dir) / path).lexically_normal().string();
+}
+
+void read_topics(YamlSection s, TopicNames& t) {
+  s.text("plots", t.plots);
+  s.text("tracks", t.tracks);
+  s.text("status", t.status);
+  for (const auto* key : {"plots", "tracks", "status"}) {
+    const std::string& name = key[0] == 'p' ? t.plots : key[0] == 't' ? t.tracks : t.status;
+    if (s.has(key) && name.empty()) s.error(key, "expected a non-empty topic name");
+  }
+  s.finish();
+}
+
+void read_qos(YamlSection s, DdsSettings& d) {
+  YamlSection plots = s.section("plots");
+  std::string reliability(to_string(d.plots.reliability));
+  plots.choice("reliability", reliability, {"reliable", "best_effort"});
+  d.plots.reliability =
+      reliability == "best_effort" ? Reliability::kBestEffort : Reliability::kReliable;
+  plots.integer("history_depth", d.plots.history_depth, Range{0.0, 100000.0});
+  plots.finish();
+  YamlSection tracks = s.section("tracks");
+  std::string durability(to_string(d.tracks.durability));
+  tracks.choice("durability", durability, {"transient_local", "volatile"});
+  d.tracks.durability =
+      durability == "volatile" ? Durability::kVolatile : Durability::kTransientLocal;
+  tracks.integer("history_depth", d.tracks.history_depth, Range{1.0, 1000.0});
+  tracks.finish();
+  YamlSection status = s.section("status");
+  status.number("deadline", d.status.deadline, Range::positive());
+  status.finish();
+  s.finish();
+}
+
+void read_dds(YamlSection s, DdsSettings& d) {
+  s.integer("domain", d.domain, Range{0.0, 232.0});  // Cyclone: 0..232 on UDP
+  if (s.has("partition")) {
+    const YAML::Node node = s.node()["partition"];
+    if (node.IsScalar()) {
+      std::string one;
+      s.text("partition", one);
+      d.partitions = {one};
+    } else {
+      s.texts("partition", d.partitions);
+    }
+  }
+  read_topics(s.section("topics"), d.topics);
+  read_qos(s.section("qos"), d);
+  s.finish();
+}
+
+void read_queue(YamlSection s, QueueSettings& q) {
+  s.integer("capacity", q.capacity, Range{1.0, 100000.0});
+  std::string policy(to_string(q.overload));
+  s.choice("overload", policy, {"drop_oldest", "drop_newest"});
+  q.overload = policy == "drop_newest" ? OverloadPolicy::kDropNewest : OverloadPolicy::kDropOldest;
+  s.finish();
+}
+
+void read_logging(YamlSection s, LogSettings& l, const std::string& base_dir) {
+  s.choice("level", l.level, {"trace", "debug", "info", "warn", "error", "critical", "off"});
+  std::string sink = l.sink == LogSink::kFile ? "file" : "console";
+  s.choice("sink", sink, {"console", "file"});
+  l.sink = sink == "file" ? LogSink::kFile : LogSink::kConsole;
+  s.text("file", l.file, l.sink == LogSink::kFile);
+  l.file = resolve(l.file, base_dir);
+  s.integer("max_size_mb", l.max_size_mb, Range{1.0, 100000.0});
+  s.integer("max_files", l.max_files, Range{1.0, 1000.0});
+  if (l.sink == LogSink::kConsole && s.has("file")) {
+    s.error("file", "only used with sink: file");
+  }
+  s.finish();
+}
+
+DaemonConfig read_config(const YAML::Node& root, ErrorList& errors, const std::string& base_dir) {
+  DaemonConfig c;
+  YamlSection top(root, "", errors);
+  YamlSection d = top.section("skytrackd");
+  d.text("instance", c.instance);
+  if (d.has("instance") && c.instance.empty()) d.error("instance", "expected a non-empty name");
+  d.text("profile", c.profile);
+  c.profile = resolve(c.profile, base_dir);
+  std::vector<std::string> sensors;
+  d.texts("sensors", sensors);
+  for (const std::string& text : sensors) {
+    std::size_t used = 0;
+    long long id = -1;
+    try {
+      id = std::stoll(text, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != text.size() || id < 0 || id > 4294967295LL) {
+      d.error("sensors",
+              "expected a list of sensor ids (integers 0..4294967295), got '" + text + "' in it");
+      break;
+    }
+    c.sensors.push_back(id);
+  }
+  d.integer("max_plots_per_scan", c.max_plots_per_scan, Range{1.0, 10000000.0});
+  d.number("status_period", c.status_period, Range{0.01, 3600.0});
+  d.finish();
+  read_dds(top.section("dds"), c.dds);
+  read_queue(top.section("queue"), c.queue);
+  read_logging(top.section("logging"), c.logging, base_dir);
+  top.finish();
+  if (errors.empty() && c.dds.status.deadline <= c.status_period) {
+    errors.add(root["dds"]["qos"]["status"]["deadline"], "dds.qos.status.deadline",
+               "expected more than skytrackd.status_period (" + std::to_string(c.status_period) +
+                   " s), got " + std::to_string(c.dds.status.deadline));
+  }
+  return c;
+}
+
+Expected<DaemonConfig> build(const YAML::Node& node, ErrorList& errors,
+                             const std::string& base_dir) {
+  try {
+    DaemonConfig c = read_config(node, errors, base_dir);
+    if (errors.empty()) return c;
+  } catch (const YAML::Exception& e) {
+    errors.add(YAML::Node(), "", std::string("unexpected YAML error: ") + e.what());
+  }
+  return make_error(errors.joined());
+}
+
+}  // namespace
+
+std::string_view to_string(Reliability value) {
+  return value == Reliability::kBestEffort ? "best_effort" : "reliable";
+}
+std::string_view to_string(Durability value) {
+  return value == Durability::kVolatile ? "volatile" : "transient_local";
+}
+std::string_view to_string(OverloadPolicy value) {
+  return value == OverloadPolicy::kDropNewest ? "drop_newest" : "drop_oldest";
+}
+
+Expected<DaemonConfig> load_daemon_config(const std::string& path) {
+  ErrorList errors(path);
+  const auto node = config::load_yaml_file(path, errors);
+  if (!node) return make_error(errors.joined());
+  const std::string base = std::filesystem::absolute(path).parent_path().string();
+  return build(*node, errors, base);
+}
+
+Expected<DaemonConfig> parse_daemon_config(const std::string& yaml_text,
+                                           const std::string& name_for_messages,
+                                           const std::string& base_dir) {
+  ErrorList errors(name_for_messages);
+  YAML::Node node;
+  try {
+    node = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException& e) {
+    errors.add(YAML::Node(), "", "line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+    return make_error(errors.joined());
+  }
+  return build(node, errors, base_dir);
+}
+
+}  // namespace skytrack::daemon

@@ -1,0 +1,67 @@
+// Small daemon parts: rate-limited logging, status counters, profile reload decisions.
+#include <gtest/gtest.h>
+
+#include "skytrack/daemon/daemon.hpp"
+#include "skytrack/daemon/rate_limiter.hpp"
+#include "skytrack/daemon/status_collector.hpp"
+
+namespace skytrack::daemon {
+namespace {
+
+TEST(RateLimiter, OneMessagePerIntervalCountingTheSuppressedEvents) {
+  RateLimiter limiter(std::chrono::seconds(1));
+  const RateLimiter::Clock::time_point t0{};
+  EXPECT_EQ(limiter.allow(t0), 1u);
+  EXPECT_FALSE(limiter.allow(t0 + std::chrono::milliseconds(100)));
+  EXPECT_FALSE(limiter.allow(t0 + std::chrono::milliseconds(900)));
+  EXPECT_EQ(limiter.allow(t0 + std::chrono::milliseconds(1000)), 3u);
+  EXPECT_FALSE(limiter.allow(t0 + std::chrono::milliseconds(1500)));
+}
+
+TEST(StatusCollector, CountsRejectionsByReasonAndTracksByStatus) {
+  StatusCollector status("unit");
+  status.set_profile("default", "3");
+  status.scan_rejected("duplicate scan");
+  status.scan_rejected("duplicate scan");
+  status.scan_rejected("unknown sensor");
+  status.plots_rejected("negative range", 2);
+  status.plots_rejected("clutter", 0);  // nothing to count: no entry
+  EXPECT_EQ(status.scan_dropped(), 1u);
+  TrackFrame frame;
+  frame.tracks.resize(4);
+  frame.tracks[0].status = TrackStatus::kConfirmed;
+  frame.tracks[1].status = TrackStatus::kConfirmed;
+  frame.tracks[2].status = TrackStatus::kCoasting;
+  frame.tracks[3].status = TrackStatus::kTentative;
+  status.scan_processed(12, 0.002, frame);
+  const TrackerStatusReport r = status.snapshot(5);
+  EXPECT_EQ(r.instance, "unit");
+  EXPECT_EQ(r.profile_version, "3");
+  EXPECT_EQ(r.scans_processed, 1u);
+  EXPECT_EQ(r.plots_processed, 12u);
+  EXPECT_EQ(r.scans_dropped, 1u);
+  EXPECT_EQ(r.queue_depth, 5u);
+  EXPECT_EQ(r.scans_rejected,
+            (std::vector<RejectionCount>{{"duplicate scan", 2}, {"unknown sensor", 1}}));
+  EXPECT_EQ(r.plots_rejected, (std::vector<RejectionCount>{{"negative range", 2}}));
+  EXPECT_EQ(r.tracks_confirmed, 2u);
+  EXPECT_EQ(r.tracks_coasting, 1u);
+  EXPECT_EQ(r.tracks_tentative, 1u);
+  EXPECT_DOUBLE_EQ(r.latency_max, 0.002);
+  EXPECT_GE(r.uptime, 0.0);
+}
+
+TEST(ProfileReload, OnlyAnIdentityChangeKeepsTheTracks) {
+  config::TrackingProfile before;
+  config::TrackingProfile renamed = before;
+  renamed.identity.version = "2";
+  EXPECT_EQ(restart_reason(before, renamed), "");
+  config::TrackingProfile tuned = before;
+  tuned.dimension = 3;
+  tuned.track_life = {};
+  tuned.association.gate_probability = 0.99;
+  EXPECT_EQ(restart_reason(before, tuned), "dimension, association");
+}
+
+}  // namespace
+}  // namespace skytrack::daemon

@@ -1,0 +1,152 @@
+// `skytrack bench-latency`: the daemon's end-to-end latency. Publishes PlotBatch samples of N
+// moving targets (Cartesian plots, no clutter, seeded noise) one at a time and times each until
+// the TrackBatch of the same scan arrives (ping-pong, like ddsperf's round trip), then prints
+// p50/p99/max over the scans after the warm-up. A benchmark tool, not a test:
+// tools/experiments/daemon-latency.sh runs it next to ddsperf for the floor.
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "dds_tool.hpp"
+#include "skytrack/daemon/dds_session.hpp"
+#include "skytrack/daemon/latency_stats.hpp"
+#include "skytrack/dds/conversion.hpp"
+
+namespace skytrack::tool {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct BenchOptions {
+  DdsToolOptions dds;
+  int targets = 100;
+  int scans = 300;
+  int warmup = 20;
+  std::uint32_t sensor = 1;
+};
+
+/// Scan k of N targets on a 2 km grid, all flying east at 200 m/s (a steady picture: no
+/// crossings, so every scan costs the tracker about the same).
+PlotScan make_scan(int targets, int k, std::uint32_t sensor, std::mt19937_64& rng) {
+  std::normal_distribution<double> noise(0.0, 20.0);
+  PlotScan scan;
+  scan.sensor = sensor;
+  scan.scan = static_cast<std::uint64_t>(k);
+  scan.time = static_cast<double>(k);
+  scan.sigma.x = 20.0;
+  scan.sigma.y = 20.0;
+  const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(targets))));
+  for (int i = 0; i < targets; ++i) {
+    Plot p;
+    p.id = i;
+    p.form = PlotForm::kCartesian;
+    p.x = 2000.0 * (i % side) + 200.0 * scan.time + noise(rng);
+    p.y = 2000.0 * (i / side) + noise(rng);
+    scan.plots.push_back(p);
+  }
+  return scan;
+}
+
+int run_bench(const BenchOptions& o) {
+  auto config = resolve_dds_tool_config(o.dds);
+  if (!config) {
+    fmt::print(stderr, "{}\n", config.error().message);
+    return 2;
+  }
+  install_stop_handlers();
+  auto session = daemon::DdsSession::open(config->dds);
+  if (!session) {
+    fmt::print(stderr, "skytrack bench-latency: {}\n", session.error().message);
+    return 2;
+  }
+  const auto& dds = config->dds;
+  auto plots = session->topic(&skytrack_dds_PlotBatch_desc, dds.topics.plots);
+  auto tracks = session->topic(&skytrack_dds_TrackBatch_desc, dds.topics.tracks);
+  if (!plots || !tracks) {
+    fmt::print(stderr, "skytrack bench-latency: {}\n", (!plots ? plots : tracks).error().message);
+    return 2;
+  }
+  auto writer = session->writer(*plots, daemon::plots_writer_qos(dds).get());
+  auto reader = session->reader(*tracks, daemon::tracks_reader_qos(dds, true).get());
+  if (!writer || !reader) {
+    fmt::print(stderr, "skytrack bench-latency: {}\n", (!writer ? writer : reader).error().message);
+    return 2;
+  }
+  if (!daemon::wait_for_readers(*writer, 1, std::chrono::seconds(30)) ||
+      !daemon::wait_for_writers(*reader, 1, std::chrono::seconds(30))) {
+    fmt::print(stderr, "skytrack bench-latency: no skytrackd on domain {}\n", dds.domain);
+    return 3;
+  }
+  const dds_entity_t waitset = dds_create_waitset(session->participant());
+  dds_waitset_attach(waitset, dds_create_readcondition(*reader, DDS_ANY_STATE), 0);
+  // Drain historical (transient-local) samples first.
+  std::array<void*, 16> samples{};
+  std::array<dds_sample_info_t, 16> infos{};
+  const auto drain = [&](std::uint64_t wanted) {
+    bool found = false;
+    dds_return_t n = 0;
+    while ((n = dds_take(*reader, samples.data(), infos.data(), 16, 16)) > 0) {
+      for (dds_return_t i = 0; i < n; ++i) {
+        const auto& b =
+            *static_cast<const skytrack_dds_TrackBatch*>(samples[static_cast<std::size_t>(i)]);
+        found = found || (infos[static_cast<std::size_t>(i)].valid_data && b.sensor == o.sensor &&
+                          b.scan == wanted);
+      }
+      dds_return_loan(*reader, samples.data(), n);
+    }
+    return found;
+  };
+  drain(~0ull);
+  std::mt19937_64 rng(42);
+  daemon::LatencyStats stats(static_cast<std::size_t>(o.scans));
+  std::size_t payload = 0, lost = 0;
+  dds::PlotBatchSample sample;
+  for (int k = 0; k < o.warmup + o.scans && !stop_requested(); ++k) {
+    const PlotScan scan = make_scan(o.targets, k + 1, o.sensor, rng);
+    if (!dds::to_dds(scan, sample)) return 2;
+    payload = sample->plot_ids._length * (8 + 4 + 8 * dds::kPlotStride) + 200;
+    const auto t0 = Clock::now();
+    if (dds_write(*writer, sample.data()) != DDS_RETCODE_OK) return 2;
+    bool answered = false;
+    while (!answered && Clock::now() - t0 < std::chrono::seconds(5)) {
+      dds_waitset_wait(waitset, nullptr, 0, DDS_MSECS(100));
+      answered = drain(scan.scan);
+    }
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    if (!answered) {
+      ++lost;
+      continue;
+    }
+    if (k >= o.warmup) stats.add(seconds);
+  }
+  fmt::print(
+      "targets {:5d}  payload ~{:7d} B  scans {:4d}  PlotBatch->TrackBatch p50 {:8.1f} us  p99 "
+      "{:8.1f} us  max {:8.1f} us  unanswered {}\n",
+      o.targets, payload, stats.window_size(), stats.percentile(0.5) * 1e6,
+      stats.percentile(0.99) * 1e6, stats.max() * 1e6, lost);
+  return lost == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+void add_bench_latency_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench-latency", "Time PlotBatch -> TrackBatch through a running skytrackd (benchmark)");
+  cmd->add_option("--targets", o->targets, "Targets (plots) per scan")->default_val(100);
+  cmd->add_option("--scans", o->scans, "Timed scans")->default_val(300);
+  cmd->add_option("--warmup", o->warmup, "Untimed scans first (track initiation)")->default_val(20);
+  cmd->add_option("--sensor", o->sensor, "Sensor id of the scans")->default_val(1);
+  add_dds_options(*cmd, o->dds);
+  cmd->callback([o, &exit_code] { exit_code = run_bench(*o); });
+}
+
+}  // namespace skytrack::tool

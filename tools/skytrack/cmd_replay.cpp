@@ -1,0 +1,288 @@
+// `skytrack replay`: publishes a recorded plot stream as PlotBatch samples, at recorded timing,
+// N times faster, or as fast as the daemon takes them (--rate max: at most --window scans in
+// flight, a scan counting as taken once the daemon's TrackBatch for it or for a later scan
+// arrives; the daemon's queue is FIFO, so a later answer means the earlier scan was handled).
+// It waits for the daemon's reader to match before it starts.
+#include <chrono>
+#include <deque>
+#include <map>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "dds_tool.hpp"
+#include "progress_bar.hpp"
+#include "skytrack/daemon/dds_session.hpp"
+#include "skytrack/dds/conversion.hpp"
+#include "skytrack/io/jsonl_reader.hpp"
+
+namespace skytrack::tool {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct ReplayOptions {
+  DdsToolOptions dds;
+  std::string plots;
+  std::string rate = "1";
+  bool loop = false;
+  bool quiet = false;
+  double wait = 30.0;  // [s] for the daemon's reader
+  int window = 8;      // scans in flight at --rate max
+};
+
+/// Scans sent and not yet answered by a TrackBatch, in send order.
+class InFlight {
+ public:
+  void sent(std::uint32_t sensor, std::uint64_t scan) { items_.push_back({sensor, scan}); }
+  /// A TrackBatch for (sensor, scan): that scan and every one sent before it are done.
+  void answered(std::uint32_t sensor, std::uint64_t scan) {
+    for (std::size_t i = 0; i < items_.size(); ++i) {
+      if (items_[i].first == sensor && items_[i].second == scan) {
+        items_.erase(items_.begin(), items_.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+        return;
+      }
+    }
+  }
+  void give_up_oldest() {
+    if (!items_.empty()) items_.pop_front();
+  }
+  std::size_t size() const { return items_.size(); }
+
+ private:
+  std::deque<std::pair<std::uint32_t, std::uint64_t>> items_;
+};
+
+class Replayer {
+ public:
+  Replayer(const ReplayOptions& o, daemon::DdsSession& session, dds_entity_t writer,
+           dds_entity_t tracks_reader)
+      : options_(o), session_(session), writer_(writer), tracks_(tracks_reader) {}
+
+  int run();
+
+ private:
+  bool pass(double time_offset, std::uint64_t scan_offset);
+  void take_answers();
+  /// --rate max: waits until fewer than `limit` scans are in flight (1 s without an answer
+  /// counts the oldest as lost, e.g. a scan of a sensor the daemon does not accept).
+  void wait_in_flight(std::size_t limit);
+
+  const ReplayOptions& options_;
+  daemon::DdsSession& session_;
+  dds_entity_t writer_;
+  dds_entity_t tracks_;
+  double rate_ = 1.0;  // 0: max
+  dds_time_t start_dds_ = 0;
+  Clock::time_point start_wall_;
+  std::optional<double> first_time_;
+  double last_time_ = 0.0;
+  std::uint64_t max_scan_ = 0;
+  std::size_t scans_ = 0, plots_ = 0, unanswered_ = 0, lines_rejected_ = 0;
+  InFlight in_flight_;
+  dds::PlotBatchSample sample_;
+};
+
+void Replayer::take_answers() {
+  std::array<void*, 16> samples{};
+  std::array<dds_sample_info_t, 16> infos{};
+  for (;;) {
+    const dds_return_t n = dds_take(tracks_, samples.data(), infos.data(), 16, 16);
+    if (n <= 0) return;
+    for (dds_return_t i = 0; i < n; ++i) {
+      const auto& info = infos[static_cast<std::size_t>(i)];
+      // Historical samples (transient-local) from before this replay answer nothing.
+      if (!info.valid_data || info.source_timestamp < start_dds_) continue;
+      const auto& b =
+          *static_cast<const skytrack_dds_TrackBatch*>(samples[static_cast<std::size_t>(i)]);
+      in_flight_.answered(b.sensor, b.scan);
+    }
+    dds_return_loan(tracks_, samples.data(), n);
+  }
+}
+
+void Replayer::wait_in_flight(std::size_t limit) {
+  auto last_progress = Clock::now();
+  std::size_t before = in_flight_.size();
+  while (in_flight_.size() >= limit && !stop_requested()) {
+    take_answers();
+    if (in_flight_.size() < before) {
+      before = in_flight_.size();
+      last_progress = Clock::now();
+    } else if (Clock::now() - last_progress > std::chrono::seconds(1)) {
+      in_flight_.give_up_oldest();
+      ++unanswered_;
+      before = in_flight_.size();
+      last_progress = Clock::now();
+    }
+    if (in_flight_.size() >= limit) std::this_thread::sleep_for(std::chrono::microseconds(100));
+  }
+}
+
+bool Replayer::pass(double time_offset, std::uint64_t scan_offset) {
+  std::size_t shown = 0;
+  auto reader = io::PlotStreamReader::open(options_.plots, [&](const io::LineError& e) {
+    ++lines_rejected_;
+    if (shown++ < 20) fmt::print(stderr, "{}\n", io::to_string(e));
+  });
+  if (!reader) {
+    fmt::print(stderr, "skytrack replay: {}\n", reader.error().message);
+    return false;
+  }
+  ProgressBar progress(!options_.quiet, "scans");
+  while (auto scan = reader->next()) {
+    if (stop_requested()) break;
+    scan->time += time_offset;
+    for (Plot& p : scan->plots) {
+      if (p.time) *p.time += time_offset;
+    }
+    scan->scan += scan_offset;
+    if (!first_time_) first_time_ = scan->time;
+    last_time_ = std::max(last_time_, scan->time);
+    max_scan_ = std::max(max_scan_, scan->scan);
+    if (rate_ > 0.0) {
+      const auto due =
+          start_wall_ + std::chrono::duration_cast<Clock::duration>(
+                            std::chrono::duration<double>((scan->time - *first_time_) / rate_));
+      while (Clock::now() < due && !stop_requested()) {
+        std::this_thread::sleep_for(
+            std::min<Clock::duration>(due - Clock::now(), std::chrono::milliseconds(50)));
+      }
+    } else {
+      wait_in_flight(static_cast<std::size_t>(options_.window));
+    }
+    if (auto ok = dds::to_dds(*scan, sample_); !ok) {
+      fmt::print(stderr, "\nskytrack replay: scan {} not sent: {}\n", scan->scan,
+                 ok.error().message);
+      continue;
+    }
+    if (const dds_return_t rc = dds_write(writer_, sample_.data()); rc != DDS_RETCODE_OK) {
+      fmt::print(stderr, "\nskytrack replay: writing scan {} failed: {}\n", scan->scan,
+                 dds_strretcode(rc));
+      return false;
+    }
+    if (rate_ == 0.0) in_flight_.sent(scan->sensor, scan->scan);
+    ++scans_;
+    plots_ += scan->plots.size();
+    progress.update(reader->bytes_read(), reader->file_size(), scans_);
+  }
+  progress.finish();
+  return true;
+}
+
+int Replayer::run() {
+  if (options_.rate == "max") {
+    rate_ = 0.0;
+  } else {
+    try {
+      rate_ = std::stod(options_.rate);
+    } catch (const std::exception&) {
+      rate_ = -1.0;
+    }
+    if (!(rate_ > 0.0)) {
+      fmt::print(stderr, "skytrack replay: --rate: expected a positive number or max, got '{}'\n",
+                 options_.rate);
+      return 2;
+    }
+  }
+  start_dds_ = dds_time();
+  start_wall_ = Clock::now();
+  double time_offset = 0.0;
+  std::uint64_t scan_offset = 0;
+  std::size_t passes = 0;
+  double time_span = 0.0;
+  std::uint64_t scan_span = 0;
+  do {
+    if (!pass(time_offset, scan_offset)) return 2;
+    if (passes++ == 0) {
+      // The next pass continues the stream: later times and scan numbers, one period on.
+      const double first = first_time_.value_or(0.0);
+      const double period =
+          scans_ > 1 ? (last_time_ - first) / static_cast<double>(scans_ - 1) : 1.0;
+      time_span = last_time_ - first + period;
+      scan_span = max_scan_ + 1;
+    }
+    time_offset += time_span;
+    scan_offset += scan_span;
+  } while (options_.loop && scans_ > 0 && !stop_requested());
+  if (rate_ == 0.0) wait_in_flight(1);  // the last answers, so "done" means processed
+  const double wall = std::chrono::duration<double>(Clock::now() - start_wall_).count();
+  fmt::print(stderr,
+             "skytrack replay: {} scans ({} plots) in {:.2f} s, {} pass(es), {} lines rejected{}\n",
+             scans_, plots_, wall, passes, lines_rejected_,
+             rate_ == 0.0 ? fmt::format(", {} scans unanswered by a TrackBatch",
+                                        unanswered_ + in_flight_.size())
+                          : "");
+  return 0;
+}
+
+int run_replay(const ReplayOptions& options) {
+  auto config = resolve_dds_tool_config(options.dds);
+  if (!config) {
+    fmt::print(stderr, "{}\n", config.error().message);
+    return 2;
+  }
+  install_stop_handlers();
+  auto session = daemon::DdsSession::open(config->dds);
+  if (!session) {
+    fmt::print(stderr, "skytrack replay: {}\n", session.error().message);
+    return 2;
+  }
+  const auto& dds = config->dds;
+  auto plots = session->topic(&skytrack_dds_PlotBatch_desc, dds.topics.plots);
+  auto tracks = session->topic(&skytrack_dds_TrackBatch_desc, dds.topics.tracks);
+  if (!plots || !tracks) {
+    fmt::print(stderr, "skytrack replay: {}\n", (!plots ? plots : tracks).error().message);
+    return 2;
+  }
+  auto writer = session->writer(*plots, daemon::plots_writer_qos(dds).get());
+  auto reader = session->reader(*tracks, daemon::tracks_reader_qos(dds, true).get());
+  if (!writer || !reader) {
+    fmt::print(stderr, "skytrack replay: {}\n", (!writer ? writer : reader).error().message);
+    return 2;
+  }
+  if (!options.quiet) {
+    fmt::print(stderr, "skytrack replay: waiting for a reader of '{}' on domain {}\n",
+               dds.topics.plots, dds.domain);
+  }
+  const auto wait = std::chrono::milliseconds(static_cast<long long>(options.wait * 1000.0));
+  if (!daemon::wait_for_readers(*writer, 1, wait, [] { return !stop_requested(); })) {
+    fmt::print(stderr,
+               "skytrack replay: no reader of '{}' matched on domain {} within {} s (is skytrackd "
+               "running with the same domain, partition and QoS?)\n",
+               dds.topics.plots, dds.domain, options.wait);
+    return 3;
+  }
+  if (options.rate == "max") {
+    // Pacing needs the daemon's answers: wait (briefly) for its TrackBatch writer too.
+    daemon::wait_for_writers(*reader, 1, std::chrono::seconds(5), [] { return !stop_requested(); });
+  }
+  Replayer replayer(options, *session, *writer, *reader);
+  return replayer.run();
+}
+
+}  // namespace
+
+void add_replay_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<ReplayOptions>();
+  CLI::App* cmd = app.add_subcommand("replay", "Publish a plot stream as PlotBatch samples (DDS)");
+  cmd->add_option("--plots", options->plots, "Plot stream to publish (JSON Lines)")->required();
+  cmd->add_option("--rate", options->rate,
+                  "1: recorded timing; N: N times faster; max: as fast as the daemon takes them")
+      ->default_val("1");
+  cmd->add_flag("--loop", options->loop,
+                "Start over at the end, continuing times and scan numbers, until interrupted");
+  cmd->add_option("--wait", options->wait, "Seconds to wait for the daemon's reader")
+      ->default_val(30.0);
+  cmd->add_option("--window", options->window, "Scans in flight at --rate max")
+      ->default_val(8)
+      ->check(CLI::Range(1, 100000));
+  cmd->add_flag("--quiet", options->quiet, "No progress bar");
+  add_dds_options(*cmd, options->dds);
+  cmd->callback([options, &exit_code] { exit_code = run_replay(*options); });
+}
+
+}  // namespace skytrack::tool

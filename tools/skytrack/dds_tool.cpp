@@ -1,0 +1,56 @@
+#include "dds_tool.hpp"
+
+#include <csignal>
+
+namespace skytrack::tool {
+namespace {
+
+volatile std::sig_atomic_t stop_flag = 0;
+
+extern "C" void on_stop_signal(int) {
+  stop_flag = 1;
+}
+
+}  // namespace
+
+Expected<daemon::DaemonConfig> load_dds_tool_config(const std::string& path) {
+  if (path.empty()) return daemon::DaemonConfig{};
+  return daemon::load_daemon_config(path);
+}
+
+void add_dds_options(CLI::App& cmd, DdsToolOptions& options) {
+  cmd.add_option("--config", options.config,
+                 "skytrackd configuration to take the DDS domain, partition, topics and QoS from "
+                 "(default: the built-in defaults of config/skytrackd.yaml)");
+  cmd.add_option("--domain", options.domain, "DDS domain id (overrides the configuration)")
+      ->check(CLI::Range(0, 232));
+}
+
+Expected<daemon::DaemonConfig> resolve_dds_tool_config(const DdsToolOptions& options) {
+  auto config = load_dds_tool_config(options.config);
+  if (config && options.domain >= 0) config->dds.domain = options.domain;
+  return config;
+}
+
+Expected<dds_entity_t> open_reader(daemon::DdsSession& session,
+                                   const dds_topic_descriptor_t* descriptor,
+                                   const std::string& name, const dds_qos_t* qos) {
+  auto topic = session.topic(descriptor, name);
+  if (!topic) return unexpected(topic.error());
+  return session.reader(*topic, qos);
+}
+
+void install_stop_handlers() {
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  std::signal(SIGPIPE, SIG_IGN);
+}
+
+bool stop_requested() {
+  return stop_flag != 0;
+}
+
+}  // namespace skytrack::tool
