@@ -66,11 +66,9 @@ void run_batches(benchmark::State& state, bool dense_clutter_rules) {
   const std::vector<skytrack::PlotScan> batches = make_batches(targets, clutter);
   skytrack::config::TrackingProfile profile;
   profile.identity = {"bench", "1", ""};
-  if (dense_clutter_rules) {  // config/profiles/dense_clutter.yaml's chain and confirmation
+  if (dense_clutter_rules) {  // config/profiles/dense_clutter.yaml's initiation
     profile.initiation.m = 3;
     profile.initiation.n = 3;
-    profile.track_life.confirm_m = 4;
-    profile.track_life.confirm_n = 5;
   }
   auto pipeline = skytrack::Pipeline::create(profile);
   std::size_t next = 0;
