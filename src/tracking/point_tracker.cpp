@@ -7,11 +7,17 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "point_tracker_support.hpp"
 #include "skytrack/core/chi_square.hpp"
 #include "skytrack/geometry/frames.hpp"
 
 namespace skytrack {
 namespace {
+
+using tracking_detail::add_event;
+using tracking_detail::position_of;
+using tracking_detail::position_spread;
+using tracking_detail::velocity_of;
 
 using Clock = std::chrono::steady_clock;
 
@@ -39,31 +45,35 @@ bool measures_height(const PlotMeasurement& plot) {
   return plot.model.position_components == 3;
 }
 
-/// sqrt of the largest eigenvalue of the position block [m].
-double position_spread(const Gaussian& g, int dims) {
-  const Eigen::MatrixXd block = g.covariance.topLeftCorner(2 * dims, 2 * dims);
-  Eigen::Matrix3d pos = Eigen::Matrix3d::Zero();
-  for (int a = 0; a < dims; ++a) {
-    for (int b = 0; b < dims; ++b) pos(a, b) = block(2 * a, 2 * b);
+/// The manoeuvre gate's filter: the profile's manoeuvre models with their white acceleration
+/// raised to branching.manoeuvre_accel_sigma, in the main filter's state layout. Each gate
+/// starts the models from the track's combined estimate, so no mode switching is needed.
+Expected<std::optional<ImmFilter>> manoeuvre_filter(const config::TrackingProfile& profile,
+                                                    const ImmFilter& main) {
+  const config::BranchingSpec& spec = profile.branching;
+  if (!spec.enabled) return std::optional<ImmFilter>();
+  std::vector<AnyMotionModel> models;
+  std::vector<std::string> names;
+  for (const std::string& name : spec.manoeuvre_models) {
+    const auto it = std::find_if(profile.motion_models.begin(), profile.motion_models.end(),
+                                 [&](const config::MotionModelSpec& m) { return m.name == name; });
+    if (it == profile.motion_models.end()) {
+      return make_error("branching.manoeuvre_models: no motion model named '" + name + "'");
+    }
+    config::MotionModelSpec model = *it;
+    model.accel_sigma = std::max(model.accel_sigma, spec.manoeuvre_accel_sigma);
+    models.push_back(make_motion_model(model));
+    names.push_back(name);
   }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(pos, Eigen::EigenvaluesOnly);
-  return std::sqrt(std::max(0.0, eig.eigenvalues().maxCoeff()));
-}
-
-Eigen::Vector3d position_of(const StateVec& x, int dims) {
-  Eigen::Vector3d p = Eigen::Vector3d::Zero();
-  for (int a = 0; a < dims; ++a) p[a] = x[StateLayout::position(a)];
-  return p;
-}
-
-Eigen::Vector3d velocity_of(const StateVec& x, int dims) {
-  Eigen::Vector3d v = Eigen::Vector3d::Zero();
-  for (int a = 0; a < dims; ++a) v[a] = x[StateLayout::velocity(a)];
-  return v;
-}
-
-void add_event(TrackFrame& frame, const char* type, std::int64_t track, std::string detail) {
-  frame.events.push_back({type, track, std::move(detail)});
+  if (models.empty()) return make_error("branching.manoeuvre_models: no model given");
+  const auto n = static_cast<Eigen::Index>(models.size());
+  auto filter =
+      ImmFilter::create(std::move(models), std::move(names), Eigen::MatrixXd::Identity(n, n),
+                        main.layout(), main.measurement_spec());
+  if (!filter) {
+    return make_error("branching.manoeuvre_models: " + filter.error().message);
+  }
+  return std::optional<ImmFilter>(std::move(*filter));
 }
 
 }  // namespace
@@ -77,21 +87,29 @@ Expected<PointTracker> PointTracker::create(const config::TrackingProfile& profi
   if (dims != 2 && dims != 3) return make_error("tracker dimension must be 2 or 3");
   auto filter = ImmFilter::from_profile(profile, dims);
   if (!filter) return unexpected(filter.error());
+  auto manoeuvre = manoeuvre_filter(profile, *filter);
+  if (!manoeuvre) return unexpected(manoeuvre.error());
   const StateLayout layout = filter->layout();
-  return PointTracker(profile, layout, std::move(*filter));
+  return PointTracker(profile, layout, std::move(*filter), std::move(*manoeuvre));
 }
 
 PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout layout,
-                           ImmFilter filter)
+                           ImmFilter filter, std::optional<ImmFilter> manoeuvre)
     : profile_(profile),
       layout_(layout),
       filter_(std::move(filter)),
+      manoeuvre_(std::move(manoeuvre)),
       initiator_(profile.initiation, layout.dims),
       clutter_(profile.clutter_rejection),
       jpda_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
                         .k_best = profile.association.k_best}) {
   for (int d = 1; d <= kMaxMeasurementDim; ++d) {
     gate_threshold_[d] = chi_square_quantile(profile.association.gate_probability, d);
+    manoeuvre_threshold_[d] = chi_square_quantile(profile.branching.manoeuvre_gate_probability, d);
+  }
+  if (manoeuvre_) {
+    const int n = manoeuvre_->mode_count();
+    manoeuvre_start_ = Eigen::VectorXd::Constant(n, 1.0 / n);
   }
 }
 
@@ -116,7 +134,11 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
 
   start = Clock::now();
   reject_clutter(report, frame);
-  associate_and_update(report, frame);
+  if (branching()) {
+    associate_branches(report, frame);
+  } else {
+    associate_and_update(report, frame);
+  }
   report.associate = since(start);
 
   start = Clock::now();
@@ -141,6 +163,7 @@ void PointTracker::make_measurements(const PlotScan& scan, ScanReport& report) {
   }
   rejected_.assign(plots_.size(), 0);
   gated_.assign(plots_.size(), 0);
+  used_by_branch_.assign(plots_.size(), 0);
 }
 
 double PointTracker::plot_spread_at(const Eigen::Vector3d& position, const PlotScan& scan) const {
@@ -169,21 +192,38 @@ bool PointTracker::covers_region(const PlotScan& scan, const Eigen::Vector3d& ce
 void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span) {
   index_.build(positions_, layout_.dims);
   candidates_.clear();
+  manoeuvre_candidates_.clear();
   predicted_.resize(tracks_.size());
   covered_.assign(tracks_.size(), 1);
   const double widest = gate_threshold_[kMaxMeasurementDim];
+  const double widest_manoeuvre = manoeuvre_threshold_[kMaxMeasurementDim];
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
-    const ImmEstimate& estimate = tracks_[t].estimate;
-    const Gaussian mid =
-        filter_.combine(filter_.predict(estimate, std::max(batch_mid, estimate.time)));
+    const PointTrack& track = tracks_[t];
+    const ImmEstimate& estimate = track.estimate;
+    // Grandsons take manoeuvre pairs only (paper 003 §1 (4)).
+    // A doomed father waits for its branches (point_tracker_branches.cpp).
+    const bool non_manoeuvre = track.branch != BranchType::kGrandson && !track.doomed;
+    const bool manoeuvre = has_manoeuvre_gate(track) && !track.doomed;
+    const double mid_time = std::max(batch_mid, estimate.time);
+    const Gaussian mid = filter_.combine(filter_.predict(estimate, mid_time));
     const Eigen::Vector3d centre = position_of(mid.mean, layout_.dims);
     // Search radius: the widest gate in the most uncertain direction, plus the motion over
     // half the batch's time span. The exact gate test is per plot, in measurement space.
-    const double track_sigma = position_spread(mid, layout_.dims);
     const double plot_sigma = plot_spread_at(centre, scan);
-    const double radius =
-        std::sqrt(widest * (track_sigma * track_sigma + plot_sigma * plot_sigma)) +
-        velocity_of(mid.mean, layout_.dims).norm() * half_span;
+    const auto reach = [&](const Gaussian& g, double threshold) {
+      const double track_sigma = position_spread(g, layout_.dims);
+      return std::sqrt(threshold * (track_sigma * track_sigma + plot_sigma * plot_sigma)) +
+             velocity_of(g.mean, layout_.dims).norm() * half_span;
+    };
+    double radius = reach(mid, widest);
+    if (manoeuvre) {
+      // The manoeuvre gate is the union of its models' gates: cover every model's centre.
+      const ImmEstimate m = manoeuvre_prediction(estimate, mid_time);
+      for (const Gaussian& mode : m.modes) {
+        const double offset = (position_of(mode.mean, layout_.dims) - centre).norm();
+        radius = std::max(radius, offset + reach(mode, widest_manoeuvre));
+      }
+    }
     // A sector batch looks at a track whose predicted position lies in the sector; one whose
     // search region only reaches into it may take a plot from it but is not aged by it.
     covered_[t] = covers(scan, centre) ? 1 : 0;
@@ -206,14 +246,24 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
         nearest = j;
       }
     }
-    predicted_[t] = filter_.predict(estimate, std::max(plots_[nearest].time, estimate.time));
+    const double time = std::max(plots_[nearest].time, estimate.time);
+    predicted_[t] = filter_.predict(estimate, time);
+    const ImmEstimate m_predicted =
+        manoeuvre ? manoeuvre_prediction(estimate, time) : ImmEstimate{};
     for (const int j : neighbours_) {
       PlotHypothesis hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
       if (!hypothesis.usable) continue;
+      if (manoeuvre) {
+        const PlotHypothesis m = manoeuvre_->hypothesise(m_predicted, plots_[j]);
+        if (m.usable && m.min_nis <= manoeuvre_threshold_[plots_[j].model.size()]) {
+          manoeuvre_candidates_.push_back({static_cast<int>(t), j, hypothesis, m.likelihood});
+        }
+      }
       // A plot inside any mode's gate (the union of the modes' gates) is a candidate.
-      if (hypothesis.min_nis > gate_threshold_[plots_[j].model.size()]) continue;
+      if (!non_manoeuvre || hypothesis.min_nis > gate_threshold_[plots_[j].model.size()]) continue;
       gated_[j] = 1;
-      candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis)});
+      const double likelihood = hypothesis.likelihood;
+      candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis), likelihood});
     }
   }
 }
@@ -231,6 +281,7 @@ void PointTracker::reject_clutter(ScanReport& report, TrackFrame& frame) {
   const clutter::ClutterRejectionResult& result = clutter_.apply(positions_, layout_.dims, protect);
   for (std::size_t j = 0; j < plots_.size(); ++j) rejected_[j] = result.keep[j] ? 0 : 1;
   std::erase_if(candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
+  std::erase_if(manoeuvre_candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
   report.plots_rejected_clutter = result.rejected;
   add_event(frame, "clutter_rejected", 0,
             std::to_string(result.rejected) + " of " + std::to_string(plots_.size()) + " plots");
@@ -238,22 +289,34 @@ void PointTracker::reject_clutter(ScanReport& report, TrackFrame& frame) {
 
 void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
   estimate_clutter_density();
+  kind_list_.resize(candidates_.size());
+  for (std::size_t k = 0; k < candidates_.size(); ++k) kind_list_[k] = static_cast<int>(k);
+  solve_clusters(candidates_, kind_list_, profile_.association.gate_probability, report, frame,
+                 [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
+                   update_track(t, mine, beta, miss, frame);
+                 });
+}
+
+void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<const int> list,
+                                  double gate_probability, ScanReport& report, TrackFrame& frame,
+                                  const OnTrack& on_track) {
   const double pd = profile_.association.detection_probability;
-  const double pg = profile_.association.gate_probability;
   // Candidates are grouped by track (they were made track by track) and clustered.
   pairs_.clear();
-  for (const Candidate& c : candidates_) pairs_.push_back({c.track, c.plot});
+  for (const int k : list) pairs_.push_back({pool[k].track, pool[k].plot});
   const std::span<const Cluster> clusters =
       clusters_.build(static_cast<int>(tracks_.size()), static_cast<int>(plots_.size()), pairs_);
-  std::vector<int> first(tracks_.size() + 1, 0);  // candidates_ range per track
-  for (const Candidate& c : candidates_) ++first[c.track + 1];
+  std::vector<int> first(tracks_.size() + 1, 0);  // range of `list` per track
+  for (const int k : list) ++first[pool[k].track + 1];
   for (std::size_t t = 0; t < tracks_.size(); ++t) first[t + 1] += first[t];
 
+  std::vector<double> beta;
+  std::vector<int> mine;
   for (const Cluster& cluster : clusters) {
     const auto n_tracks = static_cast<Eigen::Index>(cluster.tracks.size());
     const auto n_plots = static_cast<Eigen::Index>(cluster.plots.size());
     if (n_plots == 0) {
-      for (const int t : cluster.tracks) update_track(t, {}, {}, 1.0, frame);
+      for (const int t : cluster.tracks) on_track(t, {}, {}, 1.0);
       continue;
     }
     ++report.clusters;
@@ -261,16 +324,17 @@ void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
     // Each plot's likelihood ratio against clutter in its own measurement space.
     JpdaProblem problem;
     problem.likelihood = Eigen::MatrixXd::Zero(n_tracks, n_plots);
-    problem.miss = Eigen::VectorXd::Constant(n_tracks, 1.0 - pd * pg);
+    problem.miss = Eigen::VectorXd::Constant(n_tracks, 1.0 - pd * gate_probability);
     problem.clutter_density = 1.0;
+    const auto column = [&](int plot) {
+      return std::find(cluster.plots.begin(), cluster.plots.end(), plot) - cluster.plots.begin();
+    };
     for (Eigen::Index ti = 0; ti < n_tracks; ++ti) {
       const int t = cluster.tracks[ti];
       for (int k = first[t]; k < first[t + 1]; ++k) {
-        const Candidate& c = candidates_[k];
-        const auto pj =
-            std::find(cluster.plots.begin(), cluster.plots.end(), c.plot) - cluster.plots.begin();
-        problem.likelihood(ti, pj) =
-            pd * c.hypothesis.likelihood / clutter_density(plots_[c.plot], c.plot);
+        const Candidate& c = pool[list[k]];
+        problem.likelihood(ti, column(c.plot)) =
+            pd * c.likelihood / clutter_density(plots_[c.plot], c.plot);
       }
     }
     const bool gnn = profile_.association.method == config::AssociationMethod::kGnn;
@@ -281,18 +345,15 @@ void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
                 std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +
                     std::to_string(profile_.association.k_best) + " best joint events");
     }
-    std::vector<double> beta;
     for (Eigen::Index ti = 0; ti < n_tracks; ++ti) {
       const int t = cluster.tracks[ti];
       beta.clear();
+      mine.clear();
       for (int k = first[t]; k < first[t + 1]; ++k) {
-        const auto pj = std::find(cluster.plots.begin(), cluster.plots.end(), candidates_[k].plot) -
-                        cluster.plots.begin();
-        beta.push_back(result.beta(ti, pj + 1));
+        beta.push_back(result.beta(ti, column(pool[list[k]].plot) + 1));
+        mine.push_back(list[k]);
       }
-      std::vector<int> mine(static_cast<std::size_t>(first[t + 1] - first[t]));
-      for (std::size_t k = 0; k < mine.size(); ++k) mine[k] = first[t] + static_cast<int>(k);
-      update_track(t, mine, beta, result.beta(ti, 0), frame);
+      on_track(t, mine, beta, result.beta(ti, 0));
     }
   }
 }
@@ -302,30 +363,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
                                 TrackFrame& frame) {
   PointTrack& track = tracks_[t];
   if (!covered_[t] && candidates.empty()) return;  // not looked at: neither updated nor aged
-  const double pd = profile_.association.detection_probability;
-  if (candidates.empty()) {
-    track.estimate = filter_.predict(track.estimate, std::max(frame.time, track.estimate.time));
-  } else {
-    // Plots with a negligible weight change nothing but cost a Kalman update per mode: they
-    // are left out and the other weights renormalised.
-    hypotheses_.clear();
-    kept_beta_.clear();
-    double density = 0.0, kept = beta_miss;
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-      Candidate& c = candidates_[candidates[k]];
-      density += clutter_density(plots_[c.plot], c.plot) / static_cast<double>(candidates.size());
-      if (beta_plots[k] >= kAssociationReportThreshold) {
-        frame.associations.push_back({track.id, plots_[c.plot].plot_id, beta_plots[k]});
-      }
-      if (beta_plots[k] < kNegligibleBeta) continue;
-      hypotheses_.push_back(std::move(c.hypothesis));
-      kept_beta_.push_back(beta_plots[k]);
-      kept += beta_plots[k];
-    }
-    for (double& b : kept_beta_) b /= kept;
-    track.estimate = filter_.update(predicted_[t], hypotheses_, kept_beta_, beta_miss / kept, pd,
-                                    profile_.association.gate_probability, density);
-  }
+  soft_update(t, candidates_, candidates, beta_plots, beta_miss, track.id, frame);
   const double detection = 1.0 - beta_miss;
   track.quality = 0.8 * track.quality + 0.2 * detection;
   const double spread = position_spread(filter_.combine(track.estimate), layout_.dims);
@@ -333,6 +371,36 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   if (change.confirmed) add_event(frame, "confirmed", track.id, "");
   if (change.started_coasting) add_event(frame, "coasting", track.id, "");
   if (change.deleted) add_event(frame, "deleted", track.id, "");
+}
+
+void PointTracker::soft_update(int t, std::vector<Candidate>& pool, std::span<const int> candidates,
+                               std::span<const double> beta_plots, double beta_miss,
+                               std::int64_t number, TrackFrame& frame) {
+  PointTrack& track = tracks_[t];
+  const double pd = profile_.association.detection_probability;
+  if (candidates.empty()) {
+    track.estimate = filter_.predict(track.estimate, std::max(frame.time, track.estimate.time));
+    return;
+  }
+  // Plots with a negligible weight change nothing but cost a Kalman update per mode: they
+  // are left out and the other weights renormalised.
+  hypotheses_.clear();
+  kept_beta_.clear();
+  double density = 0.0, kept = beta_miss;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    Candidate& c = pool[candidates[k]];
+    density += clutter_density(plots_[c.plot], c.plot) / static_cast<double>(candidates.size());
+    if (beta_plots[k] >= kAssociationReportThreshold) {
+      frame.associations.push_back({number, plots_[c.plot].plot_id, beta_plots[k]});
+    }
+    if (beta_plots[k] < kNegligibleBeta) continue;
+    hypotheses_.push_back(std::move(c.hypothesis));
+    kept_beta_.push_back(beta_plots[k]);
+    kept += beta_plots[k];
+  }
+  for (double& b : kept_beta_) b /= kept;
+  track.estimate = filter_.update(predicted_[t], hypotheses_, kept_beta_, beta_miss / kept, pd,
+                                  profile_.association.gate_probability, density);
 }
 
 ImmEstimate PointTracker::start_estimate(const Initiation& initiation) const {
@@ -392,7 +460,7 @@ ImmEstimate PointTracker::start_estimate(const Initiation& initiation) const {
 void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame) {
   std::vector<PlotMeasurement> unused;
   for (std::size_t j = 0; j < plots_.size(); ++j) {
-    if (!gated_[j] && !rejected_[j]) unused.push_back(plots_[j]);
+    if (!gated_[j] && !rejected_[j] && !used_by_branch_[j]) unused.push_back(plots_[j]);
   }
   const auto covered = [&](const Eigen::Vector3d& p) { return covers(scan, p); };
   for (const Initiation& initiation : initiator_.step(batches_, scan.time, unused, covered)) {
@@ -401,6 +469,12 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     track.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
     track.estimate = start_estimate(initiation);
     track.quality = 1.0;
+    if (branching()) {
+      track.last_plot = initiation.plots.back();
+      track.last_plot_batch = batches_;
+      tree_.add_father(track.id);
+      slots_[track.id] = static_cast<int>(tracks_.size());
+    }
     std::string detail = "from plots";
     for (const PlotMeasurement& p : initiation.plots) detail += " " + std::to_string(p.plot_id);
     add_event(frame, "initiated", track.id, detail);
@@ -414,6 +488,11 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
   const int dims = layout_.dims;
   const int n = 2 * dims;
   for (const PointTrack& track : tracks_) {
+    if (track.branch != BranchType::kFather) {  // sons and grandsons are internal
+      if (track.life.status != TrackStatus::kDeleted) ++report.branches;
+      continue;
+    }
+    if (track.replaced) continue;  // its number lives on in the branch that replaced it
     const ImmEstimate at_time =
         track.estimate.time < time ? filter_.predict(track.estimate, time) : track.estimate;
     const Gaussian g = filter_.combine(at_time);
@@ -452,6 +531,10 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
   // Deleted tracks are reported once, in the batch that deletes them.
   std::erase_if(tracks_,
                 [](const PointTrack& t) { return t.life.status == TrackStatus::kDeleted; });
+  if (branching()) {
+    slots_.clear();
+    for (std::size_t i = 0; i < tracks_.size(); ++i) slots_[tracks_[i].id] = static_cast<int>(i);
+  }
 }
 
 double PointTracker::clutter_density(const PlotMeasurement& plot, int index) const {
