@@ -187,6 +187,12 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   touched_[static_cast<std::size_t>(t)] = 1;
   used_by_branch_[pair.plot] = 1;
   const std::string plot = std::to_string(plots_[pair.plot].plot_id);
+  const double spread = position_spread(filter_.combine(branch.estimate), layout_.dims);
+  if (branch.branch == BranchType::kFather) {  // made independent earlier in this batch
+    const LifeChange change = advance_life(branch.life, true, spread, profile_.track_life);
+    if (change.confirmed) add_event(frame, "confirmed", number, "");
+    return;
+  }
   if (non_manoeuvre) {  // rule 8
     tree_.mark_non_manoeuvre_update(number);
     changes_.clear();
@@ -194,7 +200,6 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
     apply(changes_, name(type, number) + " took plot " + plot + " (rule 8)", report, frame);
   }
   // Rule 10: every branch update is followed by the confirmation test.
-  const double spread = position_spread(filter_.combine(branch.estimate), layout_.dims);
   const LifeChange change = advance_life(branch.life, true, spread, profile_.track_life);
   changes_.clear();
   if (change.confirmed) {
