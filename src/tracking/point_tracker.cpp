@@ -201,9 +201,9 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     const PointTrack& track = tracks_[t];
     const ImmEstimate& estimate = track.estimate;
     // Grandsons take manoeuvre pairs only (paper 003 §1 (4)).
-    // A doomed father waits for its branches (point_tracker_branches.cpp).
+    // Grandsons and doomed fathers take manoeuvre pairs only (point_tracker_branches.cpp).
     const bool non_manoeuvre = track.branch != BranchType::kGrandson && !track.doomed;
-    const bool manoeuvre = has_manoeuvre_gate(track) && !track.doomed;
+    const bool manoeuvre = has_manoeuvre_gate(track);
     const double mid_time = std::max(batch_mid, estimate.time);
     const Gaussian mid = filter_.combine(filter_.predict(estimate, mid_time));
     const Eigen::Vector3d centre = position_of(mid.mean, layout_.dims);
@@ -493,6 +493,8 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
       continue;
     }
     if (track.replaced) continue;  // its number lives on in the branch that replaced it
+    // A doomed father is not reported while it waits for a branch to replace it.
+    if (track.doomed && track.life.status != TrackStatus::kDeleted) continue;
     const ImmEstimate at_time =
         track.estimate.time < time ? filter_.predict(track.estimate, time) : track.estimate;
     const Gaussian g = filter_.combine(at_time);

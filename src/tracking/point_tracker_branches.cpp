@@ -68,7 +68,13 @@ double log_of(double p) {
 
 bool PointTracker::has_manoeuvre_gate(const PointTrack& track) const {
   if (!branching()) return false;
-  return track.branch != BranchType::kFather || is_reported_as_firm(track.life.status);
+  return track.branch != BranchType::kFather || may_start_sons(track);
+}
+
+bool PointTracker::may_start_sons(const PointTrack& father) const {
+  return is_reported_as_firm(father.life.status) &&
+         (!father.doomed ||
+          father.life.consecutive_misses < profile_.track_life.delete_confirmed_misses);
 }
 
 ImmEstimate PointTracker::manoeuvre_prediction(const ImmEstimate& estimate, double time) const {
@@ -104,11 +110,11 @@ void PointTracker::associate_branches(ScanReport& report, TrackFrame& frame) {
         [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
           if (tracks_[t].branch != type) return;
           if (kind == PairKind::kFatherNonManoeuvre) update_father(t, mine, beta, miss, frame);
-          // A doomed father takes no plot but may start sons in the batch that
-          // doomed it, so that a branch can still keep its number.
+          // A doomed father takes no non-manoeuvre pair but may start sons, so that a
+          // branch can still keep its number.
           const PointTrack& track = tracks_[t];
           if (track.life.status == TrackStatus::kDeleted) return;
-          if (track.doomed && (*track.doomed != batches_ || !manoeuvre)) return;
+          if (track.doomed && (!manoeuvre || !may_start_sons(track))) return;
           if (kind != PairKind::kFatherNonManoeuvre && updates_track(kind)) {
             SoftUpdate& u = branch_updates_[static_cast<std::size_t>(t)];
             u.candidates.assign(mine.begin(), mine.end());
@@ -134,7 +140,11 @@ void PointTracker::update_father(int t, std::span<const int> candidates,
   if (!firm || father.life.status != TrackStatus::kDeleted) return;
   // Deleted by its life: it lives on, coasting, while branches may replace it.
   father.life.status = TrackStatus::kCoasting;
-  if (!father.doomed) father.doomed = batches_;
+  if (!father.doomed) {
+    father.doomed = batches_;
+    add_event(frame, "suspended", father.id,
+              "deleted by its track life; kept unreported while a branch may replace it");
+  }
   std::erase_if(frame.events,
                 [&](const TrackEvent& e) { return e.type == "deleted" && e.track == father.id; });
 }
@@ -215,7 +225,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   const config::BranchingSpec& spec = profile_.branching;
   const PointTrack& parent = tracks_[pair.track];
   const bool of_father = parent.branch == BranchType::kFather;
-  if (of_father && !is_reported_as_firm(parent.life.status)) return;
+  if (of_father && !may_start_sons(parent)) return;
   if (!tree_.can_branch(parent.id, spec.max_children)) return;  // rules 6-7: room left
   // A son starts at its father's latest update (rule 6), a grandson at its son's first plot
   // (rule 7): plot-to-plot manoeuvre starts (§3.3).
@@ -309,10 +319,11 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
       apply(changes_, "no plot", report, frame);
     }
   }
-  // A doomed father goes with its last branch.
+  // A doomed father that may start no more sons goes with its last branch.
   for (PointTrack& father : tracks_) {
     if (father.branch != BranchType::kFather || father.replaced || !father.doomed ||
-        father.life.status == TrackStatus::kDeleted || tree_.branch_count(father.id) > 0) {
+        father.life.status == TrackStatus::kDeleted || tree_.branch_count(father.id) > 0 ||
+        may_start_sons(father)) {
       continue;
     }
     father.life.status = TrackStatus::kDeleted;

@@ -71,8 +71,11 @@ struct PointTrack {
   std::uint64_t last_plot_batch = 0;
   double score = 0.0;     // a branch's summed log pair probabilities: the least likely is pruned
   bool replaced = false;  // a father a branch replaced: dropped without a report
-  // A firm father its track life deleted while branches may still replace it: it coasts,
-  // takes no plot, and is deleted once it has no branches left. The batch it happened in.
+  // A firm father its track life deleted (its gate too wide, or too many misses) while a
+  // branch may still replace it: it is not reported ("suspended" event), coasts and takes no
+  // non-manoeuvre pair; it starts sons from its manoeuvre gate until its misses reach
+  // delete_confirmed_misses, and is deleted (and reported so) once it has no branches left
+  // after that. A branch that replaces it brings its number back. The batch it happened in.
   std::optional<std::uint64_t> doomed;
 };
 
@@ -132,6 +135,7 @@ class PointTracker {
   ImmEstimate manoeuvre_prediction(const ImmEstimate& estimate, double time) const;
   void associate_branches(ScanReport& report, TrackFrame& frame);
   /// update_track for a father; a firm father its life deletes becomes doomed instead.
+  bool may_start_sons(const PointTrack& father) const;
   void update_father(int t, std::span<const int> candidates, std::span<const double> beta_plots,
                      double beta_miss, TrackFrame& frame);
   void confirm_branch_pairs(ScanReport& report, TrackFrame& frame);
