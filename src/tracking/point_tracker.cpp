@@ -135,7 +135,7 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
   start = Clock::now();
   reject_clutter(report, frame);
   if (branching()) {
-    associate_branches(report, frame);
+    associate_branches(scan, report, frame);
   } else {
     associate_and_update(report, frame);
   }
@@ -193,37 +193,22 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   index_.build(positions_, layout_.dims);
   candidates_.clear();
   manoeuvre_candidates_.clear();
+  batch_mid_ = batch_mid;
+  half_span_ = half_span;
   predicted_.resize(tracks_.size());
   covered_.assign(tracks_.size(), 1);
   const double widest = gate_threshold_[kMaxMeasurementDim];
-  const double widest_manoeuvre = manoeuvre_threshold_[kMaxMeasurementDim];
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
-    const PointTrack& track = tracks_[t];
-    const ImmEstimate& estimate = track.estimate;
-    // Grandsons take manoeuvre pairs only (paper 003 §1 (4)).
-    // Grandsons and doomed fathers take manoeuvre pairs only (point_tracker_branches.cpp).
-    const bool non_manoeuvre = track.branch != BranchType::kGrandson && !track.doomed;
-    const bool manoeuvre = has_manoeuvre_gate(track);
-    const double mid_time = std::max(batch_mid, estimate.time);
-    const Gaussian mid = filter_.combine(filter_.predict(estimate, mid_time));
+    const ImmEstimate& estimate = tracks_[t].estimate;
+    // Grandsons and doomed fathers take manoeuvre pairs only; manoeuvre gates are made
+    // later, for the tracks that can use them (point_tracker_branches.cpp).
+    const bool non_manoeuvre = tracks_[t].branch != BranchType::kGrandson && !tracks_[t].doomed;
+    const Gaussian mid =
+        filter_.combine(filter_.predict(estimate, std::max(batch_mid, estimate.time)));
     const Eigen::Vector3d centre = position_of(mid.mean, layout_.dims);
     // Search radius: the widest gate in the most uncertain direction, plus the motion over
     // half the batch's time span. The exact gate test is per plot, in measurement space.
-    const double plot_sigma = plot_spread_at(centre, scan);
-    const auto reach = [&](const Gaussian& g, double threshold) {
-      const double track_sigma = position_spread(g, layout_.dims);
-      return std::sqrt(threshold * (track_sigma * track_sigma + plot_sigma * plot_sigma)) +
-             velocity_of(g.mean, layout_.dims).norm() * half_span;
-    };
-    double radius = reach(mid, widest);
-    if (manoeuvre) {
-      // The manoeuvre gate is the union of its models' gates: cover every model's centre.
-      const ImmEstimate m = manoeuvre_prediction(estimate, mid_time);
-      for (const Gaussian& mode : m.modes) {
-        const double offset = (position_of(mode.mean, layout_.dims) - centre).norm();
-        radius = std::max(radius, offset + reach(mode, widest_manoeuvre));
-      }
-    }
+    const double radius = search_radius(mid, centre, widest, scan);
     // A sector batch looks at a track whose predicted position lies in the sector; one whose
     // search region only reaches into it may take a plot from it but is not aged by it.
     covered_[t] = covers(scan, centre) ? 1 : 0;
@@ -237,35 +222,39 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
       continue;
     }
     // The track is updated at the time of its nearest candidate plot.
-    int nearest = neighbours_.front();
-    double best = std::numeric_limits<double>::infinity();
-    for (const int j : neighbours_) {
-      const double d = (positions_[j] - centre).squaredNorm();
-      if (d < best) {
-        best = d;
-        nearest = j;
-      }
-    }
-    const double time = std::max(plots_[nearest].time, estimate.time);
-    predicted_[t] = filter_.predict(estimate, time);
-    const ImmEstimate m_predicted =
-        manoeuvre ? manoeuvre_prediction(estimate, time) : ImmEstimate{};
+    predicted_[t] = filter_.predict(estimate, std::max(nearest_time(centre), estimate.time));
+    if (!non_manoeuvre) continue;
     for (const int j : neighbours_) {
       PlotHypothesis hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
       if (!hypothesis.usable) continue;
-      if (manoeuvre) {
-        const PlotHypothesis m = manoeuvre_->hypothesise(m_predicted, plots_[j]);
-        if (m.usable && m.min_nis <= manoeuvre_threshold_[plots_[j].model.size()]) {
-          manoeuvre_candidates_.push_back({static_cast<int>(t), j, hypothesis, m.likelihood});
-        }
-      }
       // A plot inside any mode's gate (the union of the modes' gates) is a candidate.
-      if (!non_manoeuvre || hypothesis.min_nis > gate_threshold_[plots_[j].model.size()]) continue;
+      if (hypothesis.min_nis > gate_threshold_[plots_[j].model.size()]) continue;
       gated_[j] = 1;
       const double likelihood = hypothesis.likelihood;
       candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis), likelihood});
     }
   }
+}
+
+double PointTracker::search_radius(const Gaussian& g, const Eigen::Vector3d& centre,
+                                   double threshold, const PlotScan& scan) const {
+  const double track_sigma = position_spread(g, layout_.dims);
+  const double plot_sigma = plot_spread_at(centre, scan);
+  return std::sqrt(threshold * (track_sigma * track_sigma + plot_sigma * plot_sigma)) +
+         velocity_of(g.mean, layout_.dims).norm() * half_span_;
+}
+
+double PointTracker::nearest_time(const Eigen::Vector3d& centre) const {
+  int nearest = neighbours_.front();
+  double best = std::numeric_limits<double>::infinity();
+  for (const int j : neighbours_) {
+    const double d = (positions_[j] - centre).squaredNorm();
+    if (d < best) {
+      best = d;
+      nearest = j;
+    }
+  }
+  return plots_[nearest].time;
 }
 
 void PointTracker::reject_clutter(ScanReport& report, TrackFrame& frame) {

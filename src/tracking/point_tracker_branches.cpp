@@ -1,8 +1,9 @@
 // Branch ("filiation") tracking on the IMM-JPDA point tracker, paper 003 §1 rules (5)-(10),
 // §2.1-2.3 and §3.3 (Ma, Xu, Zhang 2020).
 //
-// Per batch, after gating (non-manoeuvre gates of fathers and sons; manoeuvre gates of firm
-// fathers, sons and grandsons, point_tracker.cpp):
+// Per batch, after the non-manoeuvre gates of fathers and sons (point_tracker.cpp), and with
+// manoeuvre gates (the manoeuvre models, started from the track's prediction) made only for
+// the tracks that can still use a manoeuvre pair once the non-manoeuvre kinds are confirmed:
 //   §2.1  JPDA marginals per pair kind (branch type x gate), each over that kind's pairs. The
 //         fathers' non-manoeuvre kind is exactly the plain tracker's IMM-JPDA: it updates the
 //         fathers, which are reported. A pair is a valid association when its probability
@@ -28,6 +29,7 @@ namespace skytrack {
 namespace {
 
 using tracking_detail::add_event;
+using tracking_detail::position_of;
 using tracking_detail::position_spread;
 
 constexpr PairKind kConfirmationOrder[kPairKinds] = {
@@ -66,11 +68,6 @@ double log_of(double p) {
 
 }  // namespace
 
-bool PointTracker::has_manoeuvre_gate(const PointTrack& track) const {
-  if (!branching()) return false;
-  return track.branch != BranchType::kFather || may_start_sons(track);
-}
-
 bool PointTracker::may_start_sons(const PointTrack& father) const {
   return is_reported_as_firm(father.life.status) &&
          (!father.doomed ||
@@ -88,47 +85,103 @@ int PointTracker::slot(std::int64_t number) const {
   return it == slots_.end() ? -1 : it->second;
 }
 
-void PointTracker::associate_branches(ScanReport& report, TrackFrame& frame) {
+void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, TrackFrame& frame) {
   estimate_clutter_density();
   branch_updates_.assign(tracks_.size(), SoftUpdate{});
   branch_pairs_.clear();
   touched_.assign(tracks_.size(), 0);
-  for (const PairKind kind : kConfirmationOrder) {
-    const bool manoeuvre = is_manoeuvre(kind);
-    std::vector<Candidate>& pool = manoeuvre ? manoeuvre_candidates_ : candidates_;
-    const BranchType type = type_of(kind);
-    kind_list_.clear();
-    for (std::size_t k = 0; k < pool.size(); ++k) {
-      if (tracks_[pool[k].track].branch == type) kind_list_.push_back(static_cast<int>(k));
-    }
-    // The fathers' kind runs even without pairs: it coasts and ages the fathers.
-    if (kind_list_.empty() && kind != PairKind::kFatherNonManoeuvre) continue;
-    const double gate_probability = manoeuvre ? profile_.branching.manoeuvre_gate_probability
-                                              : profile_.association.gate_probability;
-    solve_clusters(
-        pool, kind_list_, gate_probability, report, frame,
-        [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
-          if (tracks_[t].branch != type) return;
-          if (kind == PairKind::kFatherNonManoeuvre) update_father(t, mine, beta, miss, frame);
-          // A doomed father takes no non-manoeuvre pair but may start sons, so that a
-          // branch can still keep its number.
-          const PointTrack& track = tracks_[t];
-          if (track.life.status == TrackStatus::kDeleted) return;
-          if (track.doomed && (!manoeuvre || !may_start_sons(track))) return;
-          if (kind != PairKind::kFatherNonManoeuvre && updates_track(kind)) {
-            SoftUpdate& u = branch_updates_[static_cast<std::size_t>(t)];
-            u.candidates.assign(mine.begin(), mine.end());
-            u.beta.assign(beta.begin(), beta.end());
-            u.miss = miss;
-          }
-          for (std::size_t k = 0; k < mine.size(); ++k) {
-            if (beta[k] <= miss) continue;  // not a valid association
-            branch_pairs_.push_back({kind, t, pool[mine[k]].plot, beta[k], mine[k]});
-          }
-        });
+  // §2.1 (1), (3): the non-manoeuvre kinds; the fathers' kind also updates the fathers.
+  solve_kind(PairKind::kFatherNonManoeuvre, report, frame);
+  solve_kind(PairKind::kSonNonManoeuvre, report, frame);
+  // Their confirmation comes first in §2.2 and does not depend on the later kinds, so it
+  // tells which tracks can still use a manoeuvre pair: fathers and sons without a confirmed
+  // non-manoeuvre pair (rules 6-7) and every grandson. Only those get a manoeuvre gate.
+  const std::size_t n = tracks_.size();
+  std::vector<std::uint8_t> taken(n, 0);
+  for (const BranchPair& pair :
+       confirm_pairs(branch_pairs_, static_cast<int>(n), static_cast<int>(plots_.size()))) {
+    taken[static_cast<std::size_t>(pair.track)] = 1;
   }
+  for (std::size_t t = 0; t < n; ++t) {
+    const PointTrack& track = tracks_[t];
+    if (taken[t] != 0 || track.life.status == TrackStatus::kDeleted) continue;
+    if (track.branch == BranchType::kFather && !may_start_sons(track)) continue;
+    gate_manoeuvre(scan, static_cast<int>(t), track.branch == BranchType::kGrandson);
+  }
+  // §2.1 (2), (3): the manoeuvre kinds.
+  solve_kind(PairKind::kGrandsonManoeuvre, report, frame);
+  solve_kind(PairKind::kSonManoeuvre, report, frame);
+  solve_kind(PairKind::kFatherManoeuvre, report, frame);
   confirm_branch_pairs(report, frame);
   age_branches(report, frame);
+}
+
+void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& frame) {
+  const bool manoeuvre = is_manoeuvre(kind);
+  std::vector<Candidate>& pool = manoeuvre ? manoeuvre_candidates_ : candidates_;
+  const BranchType type = type_of(kind);
+  kind_list_.clear();
+  for (std::size_t k = 0; k < pool.size(); ++k) {
+    if (tracks_[pool[k].track].branch == type) kind_list_.push_back(static_cast<int>(k));
+  }
+  // The fathers' kind runs even without pairs: it coasts and ages the fathers.
+  if (kind_list_.empty() && kind != PairKind::kFatherNonManoeuvre) return;
+  const double gate_probability = manoeuvre ? profile_.branching.manoeuvre_gate_probability
+                                            : profile_.association.gate_probability;
+  solve_clusters(pool, kind_list_, gate_probability, report, frame,
+                 [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
+                   if (tracks_[t].branch != type) return;
+                   if (kind == PairKind::kFatherNonManoeuvre)
+                     update_father(t, mine, beta, miss, frame);
+                   // A doomed father takes no non-manoeuvre pair but may start sons, so that a
+                   // branch can still keep its number.
+                   const PointTrack& track = tracks_[t];
+                   if (track.life.status == TrackStatus::kDeleted) return;
+                   if (track.doomed && (!manoeuvre || !may_start_sons(track))) return;
+                   if (kind != PairKind::kFatherNonManoeuvre && updates_track(kind)) {
+                     SoftUpdate& u = branch_updates_[static_cast<std::size_t>(t)];
+                     u.candidates.assign(mine.begin(), mine.end());
+                     u.beta.assign(beta.begin(), beta.end());
+                     u.miss = miss;
+                   }
+                   for (std::size_t k = 0; k < mine.size(); ++k) {
+                     if (beta[k] <= miss) continue;  // not a valid association
+                     branch_pairs_.push_back({kind, t, pool[mine[k]].plot, beta[k], mine[k]});
+                   }
+                 });
+}
+
+void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) {
+  const PointTrack& track = tracks_[t];
+  // A father is updated by now: its gate starts from its prediction (the prior).
+  const ImmEstimate& prior = track.branch == BranchType::kFather ? predicted_[t] : track.estimate;
+  const ImmEstimate mid = manoeuvre_prediction(prior, std::max(batch_mid_, prior.time));
+  const Eigen::Vector3d centre = position_of(manoeuvre_->combine(mid).mean, layout_.dims);
+  // The manoeuvre gate is the union of its models' gates: cover every model's centre.
+  double radius = 0.0;
+  for (const Gaussian& mode : mid.modes) {
+    const double offset = (position_of(mode.mean, layout_.dims) - centre).norm();
+    radius = std::max(
+        radius,
+        offset + search_radius(mode, centre, manoeuvre_threshold_[kMaxMeasurementDim], scan));
+  }
+  if (covered_[t] == 0 && !covers_region(scan, centre, radius)) return;
+  index_.within(centre, radius, neighbours_);
+  if (neighbours_.empty()) return;
+  const double time = std::max(nearest_time(centre), prior.time);
+  const ImmEstimate predicted = manoeuvre_prediction(prior, time);
+  if (for_update) predicted_[t] = filter_.predict(track.estimate, time);
+  for (const int j : neighbours_) {
+    const PlotHypothesis m = manoeuvre_->hypothesise(predicted, plots_[j]);
+    if (!m.usable || m.min_nis > manoeuvre_threshold_[plots_[j].model.size()]) continue;
+    // Only an updating pair needs the plot against the track's own IMM prediction.
+    PlotHypothesis hypothesis;
+    if (for_update) {
+      hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
+      if (!hypothesis.usable) continue;
+    }
+    manoeuvre_candidates_.push_back({t, j, std::move(hypothesis), m.likelihood});
+  }
 }
 
 void PointTracker::update_father(int t, std::span<const int> candidates,

@@ -122,6 +122,11 @@ class PointTracker {
   /// True when a search region (centre, radius) reaches into the batch's coverage.
   bool covers_region(const PlotScan& scan, const Eigen::Vector3d& centre, double radius) const;
   void gate(const PlotScan& scan, double batch_mid, double half_span);
+  /// Radius of the region around `centre` holding g's gate at `threshold` (chi-square).
+  double search_radius(const Gaussian& g, const Eigen::Vector3d& centre, double threshold,
+                       const PlotScan& scan) const;
+  /// Time of the plot in neighbours_ nearest to `centre`.
+  double nearest_time(const Eigen::Vector3d& centre) const;
   void reject_clutter(ScanReport& report, TrackFrame& frame);
   void associate_and_update(ScanReport& report, TrackFrame& frame);
   void update_track(int t, std::span<const int> candidates, std::span<const double> beta_plots,
@@ -130,10 +135,13 @@ class PointTracker {
 
   // Branch tracking (point_tracker_branches.cpp).
   bool branching() const { return manoeuvre_.has_value(); }
-  /// Firm fathers and every branch have a manoeuvre gate.
-  bool has_manoeuvre_gate(const PointTrack& track) const;
   ImmEstimate manoeuvre_prediction(const ImmEstimate& estimate, double time) const;
-  void associate_branches(ScanReport& report, TrackFrame& frame);
+  void associate_branches(const PlotScan& scan, ScanReport& report, TrackFrame& frame);
+  /// Manoeuvre candidates of track t; with `for_update` (grandsons) also its IMM hypotheses
+  /// and its prediction at the nearest candidate's time.
+  void gate_manoeuvre(const PlotScan& scan, int t, bool for_update);
+  /// JPDA over one pair kind (§2.1 (3)); collects its valid pairs, updates fathers.
+  void solve_kind(PairKind kind, ScanReport& report, TrackFrame& frame);
   /// update_track for a father; a firm father its life deletes becomes doomed instead.
   bool may_start_sons(const PointTrack& father) const;
   void update_father(int t, std::span<const int> candidates, std::span<const double> beta_plots,
@@ -170,6 +178,7 @@ class PointTracker {
   std::uint64_t batches_ = 0;
   double gate_threshold_[kMaxMeasurementDim + 1] = {};  // chi-square quantile per dims
   double manoeuvre_threshold_[kMaxMeasurementDim + 1] = {};
+  double batch_mid_ = 0.0, half_span_ = 0.0;  // this batch's plot times
   BranchTree tree_;
   std::unordered_map<std::int64_t, int> slots_;  // track number -> index in tracks_
 
