@@ -29,6 +29,10 @@ std::chrono::microseconds since(Clock::time_point start) {
 // reported in the output's associations.
 constexpr double kNegligibleBeta = 1e-4;
 constexpr double kAssociationReportThreshold = 1e-3;
+// The manoeuvre kinds' probabilities only choose which branches to start, so their clusters
+// (wide gates, chained in dense clutter) get a cheaper exact attempt and fewer joint events.
+constexpr int kManoeuvreKBest = 10;
+constexpr std::int64_t kManoeuvreExactStates = std::int64_t{1} << 12;
 // Height spread of a track started from plots without height [m].
 constexpr double kUnknownHeightSigma = 3000.0;
 // Acceleration spread of a new track, where the layout has acceleration states [m/s^2].
@@ -102,7 +106,10 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout l
       initiator_(profile.initiation, layout.dims),
       clutter_(profile.clutter_rejection),
       jpda_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
-                        .k_best = profile.association.k_best}) {
+                        .k_best = profile.association.k_best}),
+      jpda_manoeuvre_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
+                                  .k_best = std::min(profile.association.k_best, kManoeuvreKBest),
+                                  .max_exact_states = kManoeuvreExactStates}) {
   for (int d = 1; d <= kMaxMeasurementDim; ++d) {
     gate_threshold_[d] = chi_square_quantile(profile.association.gate_probability, d);
     manoeuvre_threshold_[d] = chi_square_quantile(profile.branching.manoeuvre_gate_probability, d);
@@ -286,9 +293,30 @@ void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
                  });
 }
 
+const JpdaResult& PointTracker::pda_marginals(const JpdaProblem& problem) {
+  // Each track on its own (PDA): beta_j ~ likelihood ratio_j, beta_0 ~ miss weight.
+  pda_result_ = JpdaResult{};
+  const Eigen::Index n = problem.likelihood.rows(), m = problem.likelihood.cols();
+  pda_result_.beta = Eigen::MatrixXd::Zero(n, m + 1);
+  for (Eigen::Index t = 0; t < n; ++t) {
+    const double total =
+        problem.miss[t] + problem.likelihood.row(t).sum() / problem.clutter_density;
+    if (!(total > 0.0)) {
+      pda_result_.beta(t, 0) = 1.0;
+      continue;
+    }
+    pda_result_.beta(t, 0) = problem.miss[t] / total;
+    for (Eigen::Index j = 0; j < m; ++j) {
+      pda_result_.beta(t, j + 1) = problem.likelihood(t, j) / problem.clutter_density / total;
+    }
+  }
+  pda_result_.approximated = true;
+  return pda_result_;
+}
+
 void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<const int> list,
                                   double gate_probability, ScanReport& report, TrackFrame& frame,
-                                  const OnTrack& on_track) {
+                                  const OnTrack& on_track, bool pda_above_exact) {
   const double pd = profile_.association.detection_probability;
   // Candidates are grouped by track (they were made track by track) and clustered.
   pairs_.clear();
@@ -327,8 +355,19 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
       }
     }
     const bool gnn = profile_.association.method == config::AssociationMethod::kGnn;
-    const JpdaResult& result = gnn ? gnn_.associate(problem) : jpda_.solve(problem);
-    if (result.approximated) {
+    const bool pda =
+        pda_above_exact && !gnn &&
+        n_tracks > static_cast<Eigen::Index>(profile_.association.max_exact_cluster_size);
+    const JpdaResult& result =
+        pda ? pda_marginals(problem)
+            : (gnn ? gnn_.associate(problem)
+                   : (pda_above_exact ? jpda_manoeuvre_ : jpda_).solve(problem));
+    if (pda) {
+      ++report.approximated_clusters;
+      add_event(frame, "jpda_approximated", 0,
+                std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) +
+                    " plots, manoeuvre gates: PDA per track");
+    } else if (result.approximated) {
       ++report.approximated_clusters;
       add_event(frame, "jpda_approximated", 0,
                 std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +

@@ -128,27 +128,28 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
   if (kind_list_.empty() && kind != PairKind::kFatherNonManoeuvre) return;
   const double gate_probability = manoeuvre ? profile_.branching.manoeuvre_gate_probability
                                             : profile_.association.gate_probability;
-  solve_clusters(pool, kind_list_, gate_probability, report, frame,
-                 [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
-                   if (tracks_[t].branch != type) return;
-                   if (kind == PairKind::kFatherNonManoeuvre)
-                     update_father(t, mine, beta, miss, frame);
-                   // A doomed father takes no non-manoeuvre pair but may start sons, so that a
-                   // branch can still keep its number.
-                   const PointTrack& track = tracks_[t];
-                   if (track.life.status == TrackStatus::kDeleted) return;
-                   if (track.doomed && (!manoeuvre || !may_start_sons(track))) return;
-                   if (kind != PairKind::kFatherNonManoeuvre && updates_track(kind)) {
-                     SoftUpdate& u = branch_updates_[static_cast<std::size_t>(t)];
-                     u.candidates.assign(mine.begin(), mine.end());
-                     u.beta.assign(beta.begin(), beta.end());
-                     u.miss = miss;
-                   }
-                   for (std::size_t k = 0; k < mine.size(); ++k) {
-                     if (beta[k] <= miss) continue;  // not a valid association
-                     branch_pairs_.push_back({kind, t, pool[mine[k]].plot, beta[k], mine[k]});
-                   }
-                 });
+  solve_clusters(
+      pool, kind_list_, gate_probability, report, frame,
+      [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
+        if (tracks_[t].branch != type) return;
+        if (kind == PairKind::kFatherNonManoeuvre) update_father(t, mine, beta, miss, frame);
+        // A doomed father takes no non-manoeuvre pair but may start sons, so that a
+        // branch can still keep its number.
+        const PointTrack& track = tracks_[t];
+        if (track.life.status == TrackStatus::kDeleted) return;
+        if (track.doomed && (!manoeuvre || !may_start_sons(track))) return;
+        if (kind != PairKind::kFatherNonManoeuvre && updates_track(kind)) {
+          SoftUpdate& u = branch_updates_[static_cast<std::size_t>(t)];
+          u.candidates.assign(mine.begin(), mine.end());
+          u.beta.assign(beta.begin(), beta.end());
+          u.miss = miss;
+        }
+        for (std::size_t k = 0; k < mine.size(); ++k) {
+          if (beta[k] <= miss) continue;  // not a valid association
+          branch_pairs_.push_back({kind, t, pool[mine[k]].plot, beta[k], mine[k]});
+        }
+      },
+      manoeuvre);
 }
 
 void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) {

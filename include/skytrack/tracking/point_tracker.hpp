@@ -108,7 +108,11 @@ class PointTracker {
   using OnTrack = std::function<void(int, std::span<const int>, std::span<const double>, double)>;
   void solve_clusters(const std::vector<Candidate>& pool, std::span<const int> list,
                       double gate_probability, ScanReport& report, TrackFrame& frame,
-                      const OnTrack& on_track);
+                      const OnTrack& on_track, bool pda_above_exact = false);
+  /// Per-track PDA weights of a cluster (each track as if alone), for the manoeuvre kinds'
+  /// clusters above association.max_exact_cluster_size: their wide gates in dense clutter
+  /// chain hundreds of tracks, where k-best joint events cost seconds.
+  const JpdaResult& pda_marginals(const JpdaProblem& problem);
   /// IMM-PDA update of track t with its weighted candidates from `pool`; reports the
   /// associations under `number`.
   void soft_update(int t, std::vector<Candidate>& pool, std::span<const int> candidates,
@@ -172,6 +176,7 @@ class PointTracker {
   clutter::ClutterRejector clutter_;
   ClusterBuilder clusters_;
   JpdaSolver jpda_;
+  JpdaSolver jpda_manoeuvre_;  // the manoeuvre kinds' clusters (branching)
   GnnAssociator gnn_;
   std::vector<PointTrack> tracks_;
   std::int64_t next_id_ = 1;
@@ -202,6 +207,7 @@ class PointTracker {
   std::vector<std::uint8_t> touched_;         // per track: updated or created this batch
   std::vector<std::uint8_t> used_by_branch_;  // per plot: taken by a confirmed pair
   std::vector<BranchChange> changes_;
+  JpdaResult pda_result_;
   std::vector<int> neighbours_;
   std::vector<GatedPair> pairs_;
   std::vector<PlotHypothesis> hypotheses_;  // one track's update
