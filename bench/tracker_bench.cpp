@@ -1,5 +1,6 @@
 // Per-batch cost of the point tracker (Pipeline::process) against the number of targets and
-// clutter plots, with the default profile and with the dense-clutter initiation rules: a 3-D
+// clutter plots, with the default profile (branch tracking on), the same without branches
+// (plain IMM-JPDA) and with the dense-clutter initiation rules: a 3-D
 // snapshot radar over 200 km, Pd 0.9, targets on straight
 // and turning paths. Batches are simulated up front; 10 warm-up batches establish the tracks
 // before timing starts, then each iteration processes the next batch.
@@ -61,7 +62,7 @@ std::vector<skytrack::PlotScan> make_batches(int targets, int clutter) {
   return batches;
 }
 
-void run_batches(benchmark::State& state, bool dense_clutter_rules) {
+void run_batches(benchmark::State& state, bool dense_clutter_rules, bool branching = true) {
   const int targets = static_cast<int>(state.range(0)), clutter = static_cast<int>(state.range(1));
   const std::vector<skytrack::PlotScan> batches = make_batches(targets, clutter);
   skytrack::config::TrackingProfile profile;
@@ -70,12 +71,13 @@ void run_batches(benchmark::State& state, bool dense_clutter_rules) {
     profile.initiation.m = 3;
     profile.initiation.n = 3;
   }
+  profile.branching.enabled = branching;
   auto pipeline = skytrack::Pipeline::create(profile);
   std::size_t next = 0;
   for (; next < kWarmup; ++next) pipeline->process(batches[next]);
   std::size_t tracks = 0, plots = 0;
   double largest_cluster = 0.0, approximated = 0.0, gate_ms = 0.0, associate_ms = 0.0,
-         manage_ms = 0.0, confirmed = 0.0;
+         manage_ms = 0.0, confirmed = 0.0, branches = 0.0;
   for (auto _ : state) {
     if (next >= batches.size()) {
       state.SkipWithError("ran out of simulated batches");
@@ -91,6 +93,7 @@ void run_batches(benchmark::State& state, bool dense_clutter_rules) {
     associate_ms += r.associate.count() / 1000.0;
     manage_ms += r.manage.count() / 1000.0;
     confirmed = r.confirmed + r.coasting;
+    branches += r.branches;
     ++next;
   }
   state.counters["plots"] =
@@ -103,14 +106,23 @@ void run_batches(benchmark::State& state, bool dense_clutter_rules) {
   state.counters["gate_ms"] = gate_ms / n;
   state.counters["assoc_ms"] = associate_ms / n;
   state.counters["manage_ms"] = manage_ms / n;
+  state.counters["branches"] = branches / n;
 }
 void BM_DefaultProfile(benchmark::State& state) {
   run_batches(state, false);
 }
+void BM_NoBranching(benchmark::State& state) {
+  run_batches(state, false, false);
+}
+
 void BM_DenseClutterRules(benchmark::State& state) {
   run_batches(state, true);
 }
 BENCHMARK(BM_DefaultProfile)
+    ->ArgsProduct({{10, 100, 500, 1000}, {100, 1000, 5000}})
+    ->Iterations(kTimed)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_NoBranching)
     ->ArgsProduct({{10, 100, 500, 1000}, {100, 1000, 5000}})
     ->Iterations(kTimed)
     ->Unit(benchmark::kMillisecond);

@@ -250,6 +250,7 @@ BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingPro
   const std::size_t before = errors.messages().size();
   s.texts("manoeuvre_models", b.manoeuvre_models);
   const bool names_ok = errors.messages().size() == before;
+  s.number("manoeuvre_accel_sigma", b.manoeuvre_accel_sigma, Range::positive());
   s.integer("max_branches_per_father", b.max_branches_per_father, kAtLeastOne);
   s.integer("max_total_branches", b.max_total_branches, kAtLeastOne);
   s.finish();

@@ -7,11 +7,17 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "point_tracker_support.hpp"
 #include "skytrack/core/chi_square.hpp"
 #include "skytrack/geometry/frames.hpp"
 
 namespace skytrack {
 namespace {
+
+using tracking_detail::add_event;
+using tracking_detail::position_of;
+using tracking_detail::position_spread;
+using tracking_detail::velocity_of;
 
 using Clock = std::chrono::steady_clock;
 
@@ -23,6 +29,10 @@ std::chrono::microseconds since(Clock::time_point start) {
 // reported in the output's associations.
 constexpr double kNegligibleBeta = 1e-4;
 constexpr double kAssociationReportThreshold = 1e-3;
+// The manoeuvre kinds' probabilities only choose which branches to start, so their clusters
+// (wide gates, chained in dense clutter) get a cheaper exact attempt and fewer joint events.
+constexpr int kManoeuvreKBest = 10;
+constexpr std::int64_t kManoeuvreExactStates = std::int64_t{1} << 12;
 // Height spread of a track started from plots without height [m].
 constexpr double kUnknownHeightSigma = 3000.0;
 // Acceleration spread of a new track, where the layout has acceleration states [m/s^2].
@@ -39,31 +49,43 @@ bool measures_height(const PlotMeasurement& plot) {
   return plot.model.position_components == 3;
 }
 
-/// sqrt of the largest eigenvalue of the position block [m].
-double position_spread(const Gaussian& g, int dims) {
-  Eigen::Matrix3d pos = Eigen::Matrix3d::Zero();
-  for (int a = 0; a < dims; ++a) {
-    for (int b = 0; b < dims; ++b) pos(a, b) = g.covariance(2 * a, 2 * b);
+/// The manoeuvre gate's filter: the profile's manoeuvre models with their white acceleration
+/// raised to branching.manoeuvre_accel_sigma, in the main filter's state layout. Each gate
+/// starts the models from the track's combined estimate, so no mode switching is needed.
+Expected<std::optional<ImmFilter>> manoeuvre_filter(const config::TrackingProfile& profile,
+                                                    const ImmFilter& main) {
+  const config::BranchingSpec& spec = profile.branching;
+  if (!spec.enabled) return std::optional<ImmFilter>();
+  std::vector<AnyMotionModel> models;
+  std::vector<std::string> names;
+  for (const std::string& name : spec.manoeuvre_models) {
+    const auto it = std::find_if(profile.motion_models.begin(), profile.motion_models.end(),
+                                 [&](const config::MotionModelSpec& m) { return m.name == name; });
+    if (it == profile.motion_models.end()) {
+      return make_error("branching.manoeuvre_models: no motion model named '" + name + "'");
+    }
+    config::MotionModelSpec model = *it;
+    model.accel_sigma = std::max(model.accel_sigma, spec.manoeuvre_accel_sigma);
+    models.push_back(make_motion_model(model));
+    names.push_back(name);
   }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-  eig.computeDirect(pos, Eigen::EigenvaluesOnly);  // closed form: called per track per batch
-  return std::sqrt(std::max(0.0, eig.eigenvalues().maxCoeff()));
+  if (models.empty()) return make_error("branching.manoeuvre_models: no model given");
+  const auto n = static_cast<Eigen::Index>(models.size());
+  auto filter =
+      ImmFilter::create(std::move(models), std::move(names), Eigen::MatrixXd::Identity(n, n),
+                        main.layout(), main.measurement_spec());
+  if (!filter) {
+    return make_error("branching.manoeuvre_models: " + filter.error().message);
+  }
+  return std::optional<ImmFilter>(std::move(*filter));
 }
 
-Eigen::Vector3d position_of(const StateVec& x, int dims) {
-  Eigen::Vector3d p = Eigen::Vector3d::Zero();
-  for (int a = 0; a < dims; ++a) p[a] = x[StateLayout::position(a)];
-  return p;
-}
-
-Eigen::Vector3d velocity_of(const StateVec& x, int dims) {
-  Eigen::Vector3d v = Eigen::Vector3d::Zero();
-  for (int a = 0; a < dims; ++a) v[a] = x[StateLayout::velocity(a)];
-  return v;
-}
-
-void add_event(TrackFrame& frame, const char* type, std::int64_t track, std::string detail) {
-  frame.events.push_back({type, track, std::move(detail)});
+/// The life rules of sons and grandsons: the profile's, confirmed on plot counts (rule 10
+/// of paper 003 §1: a branch is confirmed by its own run of associations), since a branch
+/// starts from two plots that a father's existence already accounts for.
+config::TrackLifeSpec branch_life(config::TrackLifeSpec spec) {
+  spec.confirmation = config::ConfirmationMethod::kMOfN;
+  return spec;
 }
 
 }  // namespace
@@ -77,21 +99,33 @@ Expected<PointTracker> PointTracker::create(const config::TrackingProfile& profi
   if (dims != 2 && dims != 3) return make_error("tracker dimension must be 2 or 3");
   auto filter = ImmFilter::from_profile(profile, dims);
   if (!filter) return unexpected(filter.error());
+  auto manoeuvre = manoeuvre_filter(profile, *filter);
+  if (!manoeuvre) return unexpected(manoeuvre.error());
   const StateLayout layout = filter->layout();
-  return PointTracker(profile, layout, std::move(*filter));
+  return PointTracker(profile, layout, std::move(*filter), std::move(*manoeuvre));
 }
 
 PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout layout,
-                           ImmFilter filter)
+                           ImmFilter filter, std::optional<ImmFilter> manoeuvre)
     : profile_(profile),
+      branch_life_(branch_life(profile.track_life)),
       layout_(layout),
       filter_(std::move(filter)),
+      manoeuvre_(std::move(manoeuvre)),
       initiator_(profile.initiation, layout.dims),
       clutter_(profile.clutter_rejection),
       jpda_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
-                        .k_best = profile.association.k_best}) {
+                        .k_best = profile.association.k_best}),
+      jpda_manoeuvre_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
+                                  .k_best = std::min(profile.association.k_best, kManoeuvreKBest),
+                                  .max_exact_states = kManoeuvreExactStates}) {
   for (int d = 1; d <= kMaxMeasurementDim; ++d) {
     gate_threshold_[d] = chi_square_quantile(profile.association.gate_probability, d);
+    manoeuvre_threshold_[d] = chi_square_quantile(profile.branching.manoeuvre_gate_probability, d);
+  }
+  if (manoeuvre_) {
+    const int n = manoeuvre_->mode_count();
+    manoeuvre_start_ = Eigen::VectorXd::Constant(n, 1.0 / n);
   }
 }
 
@@ -116,7 +150,11 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
 
   start = Clock::now();
   reject_clutter(report, frame);
-  associate_and_update(report, frame);
+  if (branching()) {
+    associate_branches(scan, report, frame);
+  } else {
+    associate_and_update(report, frame);
+  }
   report.associate = since(start);
 
   start = Clock::now();
@@ -141,6 +179,7 @@ void PointTracker::make_measurements(const PlotScan& scan, ScanReport& report) {
   }
   rejected_.assign(plots_.size(), 0);
   gated_.assign(plots_.size(), 0);
+  used_by_branch_.assign(plots_.size(), 0);
 }
 
 double PointTracker::plot_spread_at(const Eigen::Vector3d& position, const PlotScan& scan) const {
@@ -169,21 +208,23 @@ bool PointTracker::covers_region(const PlotScan& scan, const Eigen::Vector3d& ce
 void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span) {
   index_.build(positions_, layout_.dims);
   candidates_.clear();
+  manoeuvre_candidates_.clear();
+  batch_mid_ = batch_mid;
+  half_span_ = half_span;
   predicted_.resize(tracks_.size());
   covered_.assign(tracks_.size(), 1);
   const double widest = gate_threshold_[kMaxMeasurementDim];
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
     const ImmEstimate& estimate = tracks_[t].estimate;
+    // Grandsons and doomed fathers take manoeuvre pairs only; manoeuvre gates are made
+    // later, for the tracks that can use them (point_tracker_branches.cpp).
+    const bool non_manoeuvre = tracks_[t].branch != BranchType::kGrandson && !tracks_[t].doomed;
     const Gaussian mid =
         filter_.combine(filter_.predict(estimate, std::max(batch_mid, estimate.time)));
     const Eigen::Vector3d centre = position_of(mid.mean, layout_.dims);
     // Search radius: the widest gate in the most uncertain direction, plus the motion over
     // half the batch's time span. The exact gate test is per plot, in measurement space.
-    const double track_sigma = position_spread(mid, layout_.dims);
-    const double plot_sigma = plot_spread_at(centre, scan);
-    const double radius =
-        std::sqrt(widest * (track_sigma * track_sigma + plot_sigma * plot_sigma)) +
-        velocity_of(mid.mean, layout_.dims).norm() * half_span;
+    const double radius = search_radius(mid, centre, widest, scan);
     // A sector batch looks at a track whose predicted position lies in the sector; one whose
     // search region only reaches into it may take a plot from it but is not aged by it.
     covered_[t] = covers(scan, centre) ? 1 : 0;
@@ -197,25 +238,39 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
       continue;
     }
     // The track is updated at the time of its nearest candidate plot.
-    int nearest = neighbours_.front();
-    double best = std::numeric_limits<double>::infinity();
-    for (const int j : neighbours_) {
-      const double d = (positions_[j] - centre).squaredNorm();
-      if (d < best) {
-        best = d;
-        nearest = j;
-      }
-    }
-    predicted_[t] = filter_.predict(estimate, std::max(plots_[nearest].time, estimate.time));
+    predicted_[t] = filter_.predict(estimate, std::max(nearest_time(centre), estimate.time));
+    if (!non_manoeuvre) continue;
     for (const int j : neighbours_) {
       PlotHypothesis hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
       if (!hypothesis.usable) continue;
       // A plot inside any mode's gate (the union of the modes' gates) is a candidate.
       if (hypothesis.min_nis > gate_threshold_[plots_[j].model.size()]) continue;
       gated_[j] = 1;
-      candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis)});
+      const double likelihood = hypothesis.likelihood;
+      candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis), likelihood});
     }
   }
+}
+
+double PointTracker::search_radius(const Gaussian& g, const Eigen::Vector3d& centre,
+                                   double threshold, const PlotScan& scan) const {
+  const double track_sigma = position_spread(g, layout_.dims);
+  const double plot_sigma = plot_spread_at(centre, scan);
+  return std::sqrt(threshold * (track_sigma * track_sigma + plot_sigma * plot_sigma)) +
+         velocity_of(g.mean, layout_.dims).norm() * half_span_;
+}
+
+double PointTracker::nearest_time(const Eigen::Vector3d& centre) const {
+  int nearest = neighbours_.front();
+  double best = std::numeric_limits<double>::infinity();
+  for (const int j : neighbours_) {
+    const double d = (positions_[j] - centre).squaredNorm();
+    if (d < best) {
+      best = d;
+      nearest = j;
+    }
+  }
+  return plots_[nearest].time;
 }
 
 void PointTracker::reject_clutter(ScanReport& report, TrackFrame& frame) {
@@ -231,6 +286,7 @@ void PointTracker::reject_clutter(ScanReport& report, TrackFrame& frame) {
   const clutter::ClutterRejectionResult& result = clutter_.apply(positions_, layout_.dims, protect);
   for (std::size_t j = 0; j < plots_.size(); ++j) rejected_[j] = result.keep[j] ? 0 : 1;
   std::erase_if(candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
+  std::erase_if(manoeuvre_candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
   report.plots_rejected_clutter = result.rejected;
   add_event(frame, "clutter_rejected", 0,
             std::to_string(result.rejected) + " of " + std::to_string(plots_.size()) + " plots");
@@ -238,22 +294,55 @@ void PointTracker::reject_clutter(ScanReport& report, TrackFrame& frame) {
 
 void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
   estimate_clutter_density();
+  kind_list_.resize(candidates_.size());
+  for (std::size_t k = 0; k < candidates_.size(); ++k) kind_list_[k] = static_cast<int>(k);
+  solve_clusters(candidates_, kind_list_, profile_.association.gate_probability, report, frame,
+                 [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
+                   update_track(t, mine, beta, miss, frame);
+                 });
+}
+
+const JpdaResult& PointTracker::pda_marginals(const JpdaProblem& problem) {
+  // Each track on its own (PDA): beta_j ~ likelihood ratio_j, beta_0 ~ miss weight.
+  pda_result_ = JpdaResult{};
+  const Eigen::Index n = problem.likelihood.rows(), m = problem.likelihood.cols();
+  pda_result_.beta = Eigen::MatrixXd::Zero(n, m + 1);
+  for (Eigen::Index t = 0; t < n; ++t) {
+    const double total =
+        problem.miss[t] + problem.likelihood.row(t).sum() / problem.clutter_density;
+    if (!(total > 0.0)) {
+      pda_result_.beta(t, 0) = 1.0;
+      continue;
+    }
+    pda_result_.beta(t, 0) = problem.miss[t] / total;
+    for (Eigen::Index j = 0; j < m; ++j) {
+      pda_result_.beta(t, j + 1) = problem.likelihood(t, j) / problem.clutter_density / total;
+    }
+  }
+  pda_result_.approximated = true;
+  return pda_result_;
+}
+
+void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<const int> list,
+                                  double gate_probability, ScanReport& report, TrackFrame& frame,
+                                  const OnTrack& on_track, bool pda_above_exact) {
   const double pd = profile_.association.detection_probability;
-  const double pg = profile_.association.gate_probability;
   // Candidates are grouped by track (they were made track by track) and clustered.
   pairs_.clear();
-  for (const Candidate& c : candidates_) pairs_.push_back({c.track, c.plot});
+  for (const int k : list) pairs_.push_back({pool[k].track, pool[k].plot});
   const std::span<const Cluster> clusters =
       clusters_.build(static_cast<int>(tracks_.size()), static_cast<int>(plots_.size()), pairs_);
-  std::vector<int> first(tracks_.size() + 1, 0);  // candidates_ range per track
-  for (const Candidate& c : candidates_) ++first[c.track + 1];
+  std::vector<int> first(tracks_.size() + 1, 0);  // range of `list` per track
+  for (const int k : list) ++first[pool[k].track + 1];
   for (std::size_t t = 0; t < tracks_.size(); ++t) first[t + 1] += first[t];
 
+  std::vector<double> beta;
+  std::vector<int> mine;
   for (const Cluster& cluster : clusters) {
     const auto n_tracks = static_cast<Eigen::Index>(cluster.tracks.size());
     const auto n_plots = static_cast<Eigen::Index>(cluster.plots.size());
     if (n_plots == 0) {
-      for (const int t : cluster.tracks) update_track(t, {}, {}, 1.0, frame);
+      for (const int t : cluster.tracks) on_track(t, {}, {}, 1.0);
       continue;
     }
     ++report.clusters;
@@ -261,38 +350,47 @@ void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
     // Each plot's likelihood ratio against clutter in its own measurement space.
     JpdaProblem problem;
     problem.likelihood = Eigen::MatrixXd::Zero(n_tracks, n_plots);
-    problem.miss = Eigen::VectorXd::Constant(n_tracks, 1.0 - pd * pg);
+    problem.miss = Eigen::VectorXd::Constant(n_tracks, 1.0 - pd * gate_probability);
     problem.clutter_density = 1.0;
+    const auto column = [&](int plot) {
+      return std::find(cluster.plots.begin(), cluster.plots.end(), plot) - cluster.plots.begin();
+    };
     for (Eigen::Index ti = 0; ti < n_tracks; ++ti) {
       const int t = cluster.tracks[ti];
       for (int k = first[t]; k < first[t + 1]; ++k) {
-        const Candidate& c = candidates_[k];
-        const auto pj =
-            std::find(cluster.plots.begin(), cluster.plots.end(), c.plot) - cluster.plots.begin();
-        problem.likelihood(ti, pj) =
-            pd * c.hypothesis.likelihood / clutter_density(plots_[c.plot], c.plot);
+        const Candidate& c = pool[list[k]];
+        problem.likelihood(ti, column(c.plot)) =
+            pd * c.likelihood / clutter_density(plots_[c.plot], c.plot);
       }
     }
     const bool gnn = profile_.association.method == config::AssociationMethod::kGnn;
-    const JpdaResult& result = gnn ? gnn_.associate(problem) : jpda_.solve(problem);
-    if (result.approximated) {
+    const bool pda =
+        pda_above_exact && !gnn &&
+        n_tracks > static_cast<Eigen::Index>(profile_.association.max_exact_cluster_size);
+    const JpdaResult& result =
+        pda ? pda_marginals(problem)
+            : (gnn ? gnn_.associate(problem)
+                   : (pda_above_exact ? jpda_manoeuvre_ : jpda_).solve(problem));
+    if (pda) {
+      ++report.approximated_clusters;
+      add_event(frame, "jpda_approximated", 0,
+                std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) +
+                    " plots, manoeuvre gates: PDA per track");
+    } else if (result.approximated) {
       ++report.approximated_clusters;
       add_event(frame, "jpda_approximated", 0,
                 std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +
                     std::to_string(profile_.association.k_best) + " best joint events");
     }
-    std::vector<double> beta;
     for (Eigen::Index ti = 0; ti < n_tracks; ++ti) {
       const int t = cluster.tracks[ti];
       beta.clear();
+      mine.clear();
       for (int k = first[t]; k < first[t + 1]; ++k) {
-        const auto pj = std::find(cluster.plots.begin(), cluster.plots.end(), candidates_[k].plot) -
-                        cluster.plots.begin();
-        beta.push_back(result.beta(ti, pj + 1));
+        beta.push_back(result.beta(ti, column(pool[list[k]].plot) + 1));
+        mine.push_back(list[k]);
       }
-      std::vector<int> mine(static_cast<std::size_t>(first[t + 1] - first[t]));
-      for (std::size_t k = 0; k < mine.size(); ++k) mine[k] = first[t] + static_cast<int>(k);
-      update_track(t, mine, beta, result.beta(ti, 0), frame);
+      on_track(t, mine, beta, result.beta(ti, 0));
     }
   }
 }
@@ -303,32 +401,8 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   PointTrack& track = tracks_[t];
   if (!covered_[t] && candidates.empty()) return;  // not looked at: neither updated nor aged
   const double pd = profile_.association.detection_probability;
-  double likelihood_ratio = 0.0;  // sum_i L_i / lambda_i over the gated plots
-  if (candidates.empty()) {
-    track.estimate = filter_.predict(track.estimate, std::max(frame.time, track.estimate.time));
-  } else {
-    // Plots with a negligible weight change nothing but cost a Kalman update per mode: they
-    // are left out and the other weights renormalised.
-    hypotheses_.clear();
-    kept_beta_.clear();
-    double density = 0.0, kept = beta_miss;
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-      Candidate& c = candidates_[candidates[k]];
-      const double plot_density = clutter_density(plots_[c.plot], c.plot);
-      density += plot_density / static_cast<double>(candidates.size());
-      if (c.hypothesis.usable) likelihood_ratio += c.hypothesis.likelihood / plot_density;
-      if (beta_plots[k] >= kAssociationReportThreshold) {
-        frame.associations.push_back({track.id, plots_[c.plot].plot_id, beta_plots[k]});
-      }
-      if (beta_plots[k] < kNegligibleBeta) continue;
-      hypotheses_.push_back(std::move(c.hypothesis));
-      kept_beta_.push_back(beta_plots[k]);
-      kept += beta_plots[k];
-    }
-    for (double& b : kept_beta_) b /= kept;
-    track.estimate = filter_.update(predicted_[t], hypotheses_, kept_beta_, beta_miss / kept, pd,
-                                    profile_.association.gate_probability, density);
-  }
+  const double likelihood_ratio =
+      soft_update(t, candidates_, candidates, beta_plots, beta_miss, track.id, frame);
   const double detection = 1.0 - beta_miss;
   track.quality = 0.8 * track.quality + 0.2 * detection;
   update_existence(track.life, likelihood_ratio, pd, profile_.association.gate_probability,
@@ -338,6 +412,41 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   if (change.confirmed) add_event(frame, "confirmed", track.id, "");
   if (change.started_coasting) add_event(frame, "coasting", track.id, "");
   if (change.deleted) add_event(frame, "deleted", track.id, "");
+}
+
+double PointTracker::soft_update(int t, std::vector<Candidate>& pool,
+                                 std::span<const int> candidates,
+                                 std::span<const double> beta_plots, double beta_miss,
+                                 std::int64_t number, TrackFrame& frame) {
+  PointTrack& track = tracks_[t];
+  const double pd = profile_.association.detection_probability;
+  if (candidates.empty()) {
+    track.estimate = filter_.predict(track.estimate, std::max(frame.time, track.estimate.time));
+    return 0.0;
+  }
+  double likelihood_ratio = 0.0;  // sum_i L_i / lambda_i over the gated plots
+  // Plots with a negligible weight change nothing but cost a Kalman update per mode: they
+  // are left out and the other weights renormalised.
+  hypotheses_.clear();
+  kept_beta_.clear();
+  double density = 0.0, kept = beta_miss;
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    Candidate& c = pool[candidates[k]];
+    const double plot_density = clutter_density(plots_[c.plot], c.plot);
+    density += plot_density / static_cast<double>(candidates.size());
+    if (c.hypothesis.usable) likelihood_ratio += c.hypothesis.likelihood / plot_density;
+    if (beta_plots[k] >= kAssociationReportThreshold) {
+      frame.associations.push_back({number, plots_[c.plot].plot_id, beta_plots[k]});
+    }
+    if (beta_plots[k] < kNegligibleBeta) continue;
+    hypotheses_.push_back(std::move(c.hypothesis));
+    kept_beta_.push_back(beta_plots[k]);
+    kept += beta_plots[k];
+  }
+  for (double& b : kept_beta_) b /= kept;
+  track.estimate = filter_.update(predicted_[t], hypotheses_, kept_beta_, beta_miss / kept, pd,
+                                  profile_.association.gate_probability, density);
+  return likelihood_ratio;
 }
 
 ImmEstimate PointTracker::start_estimate(const Initiation& initiation, TrackLife& life) const {
@@ -400,7 +509,7 @@ ImmEstimate PointTracker::start_estimate(const Initiation& initiation, TrackLife
 void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame) {
   std::vector<PlotMeasurement> unused;
   for (std::size_t j = 0; j < plots_.size(); ++j) {
-    if (!gated_[j] && !rejected_[j]) unused.push_back(plots_[j]);
+    if (!gated_[j] && !rejected_[j] && !used_by_branch_[j]) unused.push_back(plots_[j]);
   }
   const auto covered = [&](const Eigen::Vector3d& p) { return covers(scan, p); };
   for (const Initiation& initiation : initiator_.step(batches_, scan.time, unused, covered)) {
@@ -410,6 +519,12 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     track.life.existence = profile_.track_life.initial_existence;
     track.estimate = start_estimate(initiation, track.life);
     track.quality = 1.0;
+    if (branching()) {
+      track.last_plot = initiation.plots.back();
+      track.last_plot_batch = batches_;
+      tree_.add_father(track.id);
+      slots_[track.id] = static_cast<int>(tracks_.size());
+    }
     std::string detail = "from plots";
     for (const PlotMeasurement& p : initiation.plots) detail += " " + std::to_string(p.plot_id);
     add_event(frame, "initiated", track.id, detail);
@@ -423,6 +538,13 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
   const int dims = layout_.dims;
   const int n = 2 * dims;
   for (const PointTrack& track : tracks_) {
+    if (track.branch != BranchType::kFather) {  // sons and grandsons are internal
+      if (track.life.status != TrackStatus::kDeleted) ++report.branches;
+      continue;
+    }
+    if (track.replaced) continue;  // its number lives on in the branch that replaced it
+    // A doomed father is not reported while it waits for a branch to replace it.
+    if (track.doomed && track.life.status != TrackStatus::kDeleted) continue;
     const ImmEstimate at_time =
         track.estimate.time < time ? filter_.predict(track.estimate, time) : track.estimate;
     const Gaussian g = filter_.combine(at_time);
@@ -461,6 +583,10 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
   // Deleted tracks are reported once, in the batch that deletes them.
   std::erase_if(tracks_,
                 [](const PointTrack& t) { return t.life.status == TrackStatus::kDeleted; });
+  if (branching()) {
+    slots_.clear();
+    for (std::size_t i = 0; i < tracks_.size(); ++i) slots_[tracks_[i].id] = static_cast<int>(i);
+  }
 }
 
 double PointTracker::clutter_density(const PlotMeasurement& plot, int index) const {

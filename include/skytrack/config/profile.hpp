@@ -139,6 +139,9 @@ struct BranchingSpec {
   // probability; the non-manoeuvre gate uses association.gate_probability.
   double manoeuvre_gate_probability = 0.9999;
   std::vector<std::string> manoeuvre_models = {"cv", "ct_left", "ct_right"};
+  // [m/s^2] the manoeuvre gate's models take at least this white acceleration (their own
+  // accel_sigma if larger): the range of manoeuvres a target may start between two looks.
+  double manoeuvre_accel_sigma = 20.0;
   int max_branches_per_father = 12;  // sons + grandsons of one father (3 + 9 at 3 children)
   int max_total_branches = 2000;     // in the whole tracker: bounds time and memory
   bool operator==(const BranchingSpec&) const = default;

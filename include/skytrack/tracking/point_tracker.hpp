@@ -8,9 +8,19 @@
 // used at the time they were measured); tracks sharing plots form clusters whose JPDA
 // marginals (exact, or k-best above a size) weight each track's IMM-PDA update. Plots in no
 // gate feed the initiator. Reported states are predicted to the batch time.
+//
+// With branching on (profile `branching`, paper 003 §1-§2.3) each reported track (father) may
+// carry hidden sons and grandsons: a second, wider manoeuvre gate per track, pairs of five
+// kinds with their own JPDA probabilities, their ordered confirmation
+// (tracking/branch_association.hpp) and the tree rules (tracking/branch_tree.hpp), in
+// point_tracker_branches.cpp. With branching off the tracker is plain IMM-JPDA.
 #include <chrono>
 #include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "skytrack/association/cluster_builder.hpp"
@@ -24,6 +34,8 @@
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/filter/imm_filter.hpp"
 #include "skytrack/measurement/plot_measurement.hpp"
+#include "skytrack/tracking/branch_association.hpp"
+#include "skytrack/tracking/branch_tree.hpp"
 #include "skytrack/tracking/initiator.hpp"
 #include "skytrack/tracking/track_life.hpp"
 
@@ -38,6 +50,9 @@ struct ScanReport {
   int initiated = 0, deleted = 0;
   int clusters = 0, largest_cluster = 0, approximated_clusters = 0;
   int numeric_failures = 0;
+  // Branch tracking: live sons and grandsons after the batch, and this batch's decisions.
+  int branches = 0;
+  int branches_created = 0, branches_promoted = 0, branches_pruned = 0;
   // Stage timings: gating (predictions), association with the update, track management.
   std::chrono::microseconds predict{}, associate{}, manage{};
 };
@@ -47,6 +62,21 @@ struct PointTrack {
   TrackLife life;
   ImmEstimate estimate;  // posterior at estimate.time
   double quality = 0.0;  // running mean of the detection probability, in [0, 1]
+
+  // Branch tracking (paper 003); fathers only while branching is off.
+  BranchType branch = BranchType::kFather;    // only fathers are reported
+  std::optional<PlotMeasurement> first_plot;  // a branch's start plot (§1 (6)-(7))
+  std::uint64_t first_plot_batch = 0;
+  std::optional<PlotMeasurement> last_plot;  // the plot of its latest confirmed pair
+  std::uint64_t last_plot_batch = 0;
+  double score = 0.0;     // a branch's summed log pair probabilities: the least likely is pruned
+  bool replaced = false;  // a father a branch replaced: dropped without a report
+  // A firm father its track life deleted (its gate too wide, or too many misses) while a
+  // branch may still replace it: it is not reported ("suspended" event), coasts and takes no
+  // non-manoeuvre pair; it starts sons from its manoeuvre gate until its misses reach
+  // delete_confirmed_misses, and is deleted (and reported so) once it has no branches left
+  // after that. A branch that replaces it brings its number back. The batch it happened in.
+  std::optional<std::uint64_t> doomed;
 };
 
 class PointTracker {
@@ -57,17 +87,38 @@ class PointTracker {
   /// Processes one batch; fills `frame` (tracks at scan.time, associations, events).
   void process(const PlotScan& scan, TrackFrame& frame, ScanReport& report);
 
+  /// Every track: the fathers (reported) and, with branching, their sons and grandsons.
   const std::vector<PointTrack>& tracks() const { return tracks_; }
+  const BranchTree& branch_tree() const { return tree_; }
   int dims() const { return layout_.dims; }
 
  private:
-  PointTracker(const config::TrackingProfile& profile, StateLayout layout, ImmFilter filter);
+  PointTracker(const config::TrackingProfile& profile, StateLayout layout, ImmFilter filter,
+               std::optional<ImmFilter> manoeuvre);
 
   struct Candidate {  // a gated track-plot pair
     int track = 0;
     int plot = 0;
-    PlotHypothesis hypothesis;
+    PlotHypothesis hypothesis;  // against the track's IMM prediction (its update)
+    double likelihood = 0.0;    // what JPDA weighs it with (the gate's own model set)
   };
+  /// JPDA over the clusters of the candidates `list` (indices into `pool`, grouped by track),
+  /// calling `on_track(t, mine, beta, beta_miss)` per track of each cluster in cluster order
+  /// (also for tracks with no candidate: empty spans, beta_miss 1).
+  using OnTrack = std::function<void(int, std::span<const int>, std::span<const double>, double)>;
+  void solve_clusters(const std::vector<Candidate>& pool, std::span<const int> list,
+                      double gate_probability, ScanReport& report, TrackFrame& frame,
+                      const OnTrack& on_track, bool pda_above_exact = false);
+  /// Per-track PDA weights of a cluster (each track as if alone), for the manoeuvre kinds'
+  /// clusters above association.max_exact_cluster_size: their wide gates in dense clutter
+  /// chain hundreds of tracks, where k-best joint events cost seconds.
+  const JpdaResult& pda_marginals(const JpdaProblem& problem);
+  /// IMM-PDA update of track t with its weighted candidates from `pool`; reports the
+  /// associations under `number`. Returns sum_i L_i / lambda_i over the candidates (the
+  /// existence update's likelihood ratio).
+  double soft_update(int t, std::vector<Candidate>& pool, std::span<const int> candidates,
+                     std::span<const double> beta_plots, double beta_miss, std::int64_t number,
+                     TrackFrame& frame);
 
   void make_measurements(const PlotScan& scan, ScanReport& report);
   double plot_spread_at(const Eigen::Vector3d& position, const PlotScan& scan) const;
@@ -76,11 +127,41 @@ class PointTracker {
   /// True when a search region (centre, radius) reaches into the batch's coverage.
   bool covers_region(const PlotScan& scan, const Eigen::Vector3d& centre, double radius) const;
   void gate(const PlotScan& scan, double batch_mid, double half_span);
+  /// Radius of the region around `centre` holding g's gate at `threshold` (chi-square).
+  double search_radius(const Gaussian& g, const Eigen::Vector3d& centre, double threshold,
+                       const PlotScan& scan) const;
+  /// Time of the plot in neighbours_ nearest to `centre`.
+  double nearest_time(const Eigen::Vector3d& centre) const;
   void reject_clutter(ScanReport& report, TrackFrame& frame);
   void associate_and_update(ScanReport& report, TrackFrame& frame);
   void update_track(int t, std::span<const int> candidates, std::span<const double> beta_plots,
                     double beta_miss, TrackFrame& frame);
   void initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame);
+
+  // Branch tracking (point_tracker_branches.cpp).
+  bool branching() const { return manoeuvre_.has_value(); }
+  ImmEstimate manoeuvre_prediction(const ImmEstimate& estimate, double time) const;
+  void associate_branches(const PlotScan& scan, ScanReport& report, TrackFrame& frame);
+  /// Manoeuvre candidates of track t; with `for_update` (grandsons) also its IMM hypotheses
+  /// and its prediction at the nearest candidate's time.
+  void gate_manoeuvre(const PlotScan& scan, int t, bool for_update);
+  /// JPDA over one pair kind (§2.1 (3)); collects its valid pairs, updates fathers.
+  void solve_kind(PairKind kind, ScanReport& report, TrackFrame& frame);
+  /// update_track for a father; a firm father its life deletes becomes doomed instead.
+  bool may_start_sons(const PointTrack& father) const;
+  void update_father(int t, std::span<const int> candidates, std::span<const double> beta_plots,
+                     double beta_miss, TrackFrame& frame);
+  void confirm_branch_pairs(ScanReport& report, TrackFrame& frame);
+  void update_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame);
+  void create_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame);
+  /// Frees a place under the caps for a branch of `father` scoring `score`; false if the new
+  /// branch itself is the least likely.
+  bool make_room(std::int64_t father, std::int64_t parent, double score, std::int64_t plot_id,
+                 ScanReport& report, TrackFrame& frame);
+  void age_branches(ScanReport& report, TrackFrame& frame);
+  void apply(std::span<const BranchChange> changes, const std::string& reason, ScanReport& report,
+             TrackFrame& frame);
+  int slot(std::int64_t number) const;
   void report_tracks(double time, ScanReport& report, TrackFrame& frame);
   /// Clutter density for plot `index` of this batch (-1: a plot of an earlier batch).
   double clutter_density(const PlotMeasurement& plot, int index) const;
@@ -90,26 +171,47 @@ class PointTracker {
   ImmEstimate start_estimate(const Initiation& initiation, TrackLife& life) const;
 
   config::TrackingProfile profile_;
+  config::TrackLifeSpec branch_life_;  // sons and grandsons: M-of-N confirmation
   StateLayout layout_;
   ImmFilter filter_;
+  std::optional<ImmFilter> manoeuvre_;  // the manoeuvre gate's models; set when branching
+  Eigen::VectorXd manoeuvre_start_;     // their probabilities at a gate's start (uniform)
   Initiator initiator_;
   clutter::ClutterRejector clutter_;
   ClusterBuilder clusters_;
   JpdaSolver jpda_;
+  JpdaSolver jpda_manoeuvre_;  // the manoeuvre kinds' clusters (branching)
   GnnAssociator gnn_;
   std::vector<PointTrack> tracks_;
   std::int64_t next_id_ = 1;
   std::uint64_t batches_ = 0;
   double gate_threshold_[kMaxMeasurementDim + 1] = {};  // chi-square quantile per dims
+  double manoeuvre_threshold_[kMaxMeasurementDim + 1] = {};
+  double batch_mid_ = 0.0, half_span_ = 0.0;  // this batch's plot times
+  BranchTree tree_;
+  std::unordered_map<std::int64_t, int> slots_;  // track number -> index in tracks_
 
   // Per-batch workspaces (reused).
   std::vector<PlotMeasurement> plots_;
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> rejected_;
   std::vector<std::uint8_t> gated_;
-  std::vector<std::uint8_t> covered_;   // per track: inside this batch's coverage
-  std::vector<ImmEstimate> predicted_;  // per track, at its update time
-  std::vector<Candidate> candidates_;
+  std::vector<std::uint8_t> covered_;            // per track: inside this batch's coverage
+  std::vector<ImmEstimate> predicted_;           // per track, at its update time
+  std::vector<Candidate> candidates_;            // non-manoeuvre gates
+  std::vector<Candidate> manoeuvre_candidates_;  // manoeuvre gates (branching)
+  std::vector<int> kind_list_;
+  struct SoftUpdate {  // a branch's JPDA weights in the kind that updates it
+    std::vector<int> candidates;
+    std::vector<double> beta;
+    double miss = 1.0;
+  };
+  std::vector<SoftUpdate> branch_updates_;  // per track
+  std::vector<BranchPair> branch_pairs_;
+  std::vector<std::uint8_t> touched_;         // per track: updated or created this batch
+  std::vector<std::uint8_t> used_by_branch_;  // per plot: taken by a confirmed pair
+  std::vector<BranchChange> changes_;
+  JpdaResult pda_result_;
   std::vector<int> neighbours_;
   std::vector<GatedPair> pairs_;
   std::vector<PlotHypothesis> hypotheses_;  // one track's update

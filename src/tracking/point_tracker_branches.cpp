@@ -1,0 +1,441 @@
+// Branch ("filiation") tracking on the IMM-JPDA point tracker, paper 003 §1 rules (5)-(10),
+// §2.1-2.3 and §3.3 (Ma, Xu, Zhang 2020).
+//
+// Per batch, after the non-manoeuvre gates of fathers and sons (point_tracker.cpp), and with
+// manoeuvre gates (the manoeuvre models, started from the track's prediction) made only for
+// the tracks that can still use a manoeuvre pair once the non-manoeuvre kinds are confirmed:
+//   §2.1  JPDA marginals per pair kind (branch type x gate), each over that kind's pairs. The
+//         fathers' non-manoeuvre kind is exactly the plain tracker's IMM-JPDA: it updates the
+//         fathers, which are reported. A pair is a valid association when its probability
+//         exceeds the track's miss probability in the same kind.
+//   §2.2  ordered confirmation of the valid pairs (branch_association.hpp).
+//   §2.3  in that order: (1) father non-manoeuvre pair: the father's branches are released
+//         (rule 5); (2) son non-manoeuvre pair: the son is updated with its IMM-JPDA weights,
+//         its grandsons go (rule 8), and once confirmed it replaces the father (rule 10);
+//         (3) grandson manoeuvre pair: likewise (rules 9, 10); (4) son manoeuvre pair: a
+//         grandson from the son's first plot and this plot (rule 7); (5) father manoeuvre
+//         pair: a son from the father's latest update plot and this plot (rule 6). Both
+//         are plot-to-plot manoeuvre starts (§3.3).
+// Branches without a confirmed pair coast and miss; their track life deletes them. Only
+// fathers branch once confirmed ("stably tracked", §0); a tentative father is plain IMM-JPDA.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "point_tracker_support.hpp"
+#include "skytrack/tracking/point_tracker.hpp"
+
+namespace skytrack {
+namespace {
+
+using tracking_detail::add_event;
+using tracking_detail::position_of;
+using tracking_detail::position_spread;
+
+constexpr PairKind kConfirmationOrder[kPairKinds] = {
+    PairKind::kFatherNonManoeuvre, PairKind::kSonNonManoeuvre, PairKind::kGrandsonManoeuvre,
+    PairKind::kSonManoeuvre, PairKind::kFatherManoeuvre};
+
+bool is_manoeuvre(PairKind kind) {
+  return kind == PairKind::kGrandsonManoeuvre || kind == PairKind::kSonManoeuvre ||
+         kind == PairKind::kFatherManoeuvre;
+}
+
+BranchType type_of(PairKind kind) {
+  switch (kind) {
+    case PairKind::kFatherNonManoeuvre:
+    case PairKind::kFatherManoeuvre:
+      return BranchType::kFather;
+    case PairKind::kSonNonManoeuvre:
+    case PairKind::kSonManoeuvre:
+      return BranchType::kSon;
+    case PairKind::kGrandsonManoeuvre:
+      return BranchType::kGrandson;
+  }
+  return BranchType::kFather;
+}
+
+std::string name(BranchType type, std::int64_t number) {
+  std::string out(type == BranchType::kFather ? std::string_view("track") : to_string(type));
+  out.append(" ").append(std::to_string(number));
+  return out;
+}
+
+// A probability's log, floored so that a zero weight still orders branches.
+double log_of(double p) {
+  return std::log(std::max(p, 1e-300));
+}
+
+}  // namespace
+
+bool PointTracker::may_start_sons(const PointTrack& father) const {
+  return is_reported_as_firm(father.life.status) &&
+         (!father.doomed ||
+          father.life.consecutive_misses < profile_.track_life.delete_confirmed_misses);
+}
+
+ImmEstimate PointTracker::manoeuvre_prediction(const ImmEstimate& estimate, double time) const {
+  const ImmEstimate start =
+      manoeuvre_->initial(filter_.combine(estimate), manoeuvre_start_, estimate.time);
+  return manoeuvre_->predict(start, std::max(time, estimate.time));
+}
+
+int PointTracker::slot(std::int64_t number) const {
+  const auto it = slots_.find(number);
+  return it == slots_.end() ? -1 : it->second;
+}
+
+void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, TrackFrame& frame) {
+  estimate_clutter_density();
+  branch_updates_.assign(tracks_.size(), SoftUpdate{});
+  branch_pairs_.clear();
+  touched_.assign(tracks_.size(), 0);
+  // §2.1 (1), (3): the non-manoeuvre kinds; the fathers' kind also updates the fathers.
+  solve_kind(PairKind::kFatherNonManoeuvre, report, frame);
+  solve_kind(PairKind::kSonNonManoeuvre, report, frame);
+  // Their confirmation comes first in §2.2 and does not depend on the later kinds, so it
+  // tells which tracks can still use a manoeuvre pair: fathers and sons without a confirmed
+  // non-manoeuvre pair (rules 6-7) and every grandson. Only those get a manoeuvre gate.
+  const std::size_t n = tracks_.size();
+  std::vector<std::uint8_t> taken(n, 0);
+  for (const BranchPair& pair :
+       confirm_pairs(branch_pairs_, static_cast<int>(n), static_cast<int>(plots_.size()))) {
+    taken[static_cast<std::size_t>(pair.track)] = 1;
+  }
+  for (std::size_t t = 0; t < n; ++t) {
+    const PointTrack& track = tracks_[t];
+    if (taken[t] != 0 || track.life.status == TrackStatus::kDeleted) continue;
+    if (track.branch == BranchType::kFather && !may_start_sons(track)) continue;
+    gate_manoeuvre(scan, static_cast<int>(t), track.branch == BranchType::kGrandson);
+  }
+  // §2.1 (2), (3): the manoeuvre kinds.
+  solve_kind(PairKind::kGrandsonManoeuvre, report, frame);
+  solve_kind(PairKind::kSonManoeuvre, report, frame);
+  solve_kind(PairKind::kFatherManoeuvre, report, frame);
+  confirm_branch_pairs(report, frame);
+  age_branches(report, frame);
+}
+
+void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& frame) {
+  const bool manoeuvre = is_manoeuvre(kind);
+  std::vector<Candidate>& pool = manoeuvre ? manoeuvre_candidates_ : candidates_;
+  const BranchType type = type_of(kind);
+  kind_list_.clear();
+  for (std::size_t k = 0; k < pool.size(); ++k) {
+    if (tracks_[pool[k].track].branch == type) kind_list_.push_back(static_cast<int>(k));
+  }
+  // The fathers' kind runs even without pairs: it coasts and ages the fathers.
+  if (kind_list_.empty() && kind != PairKind::kFatherNonManoeuvre) return;
+  const double gate_probability = manoeuvre ? profile_.branching.manoeuvre_gate_probability
+                                            : profile_.association.gate_probability;
+  solve_clusters(
+      pool, kind_list_, gate_probability, report, frame,
+      [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
+        if (tracks_[t].branch != type) return;
+        if (kind == PairKind::kFatherNonManoeuvre) update_father(t, mine, beta, miss, frame);
+        // A doomed father takes no non-manoeuvre pair but may start sons, so that a
+        // branch can still keep its number.
+        const PointTrack& track = tracks_[t];
+        if (track.life.status == TrackStatus::kDeleted) return;
+        if (track.doomed && (!manoeuvre || !may_start_sons(track))) return;
+        if (kind != PairKind::kFatherNonManoeuvre && updates_track(kind)) {
+          SoftUpdate& u = branch_updates_[static_cast<std::size_t>(t)];
+          u.candidates.assign(mine.begin(), mine.end());
+          u.beta.assign(beta.begin(), beta.end());
+          u.miss = miss;
+        }
+        for (std::size_t k = 0; k < mine.size(); ++k) {
+          if (beta[k] <= miss) continue;  // not a valid association
+          branch_pairs_.push_back({kind, t, pool[mine[k]].plot, beta[k], mine[k]});
+        }
+      },
+      manoeuvre);
+}
+
+void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) {
+  const PointTrack& track = tracks_[t];
+  // A father is updated by now: its gate starts from its prediction (the prior).
+  const ImmEstimate& prior = track.branch == BranchType::kFather ? predicted_[t] : track.estimate;
+  const ImmEstimate mid = manoeuvre_prediction(prior, std::max(batch_mid_, prior.time));
+  const Eigen::Vector3d centre = position_of(manoeuvre_->combine(mid).mean, layout_.dims);
+  // The manoeuvre gate is the union of its models' gates: cover every model's centre.
+  double radius = 0.0;
+  for (const Gaussian& mode : mid.modes) {
+    const double offset = (position_of(mode.mean, layout_.dims) - centre).norm();
+    radius = std::max(
+        radius,
+        offset + search_radius(mode, centre, manoeuvre_threshold_[kMaxMeasurementDim], scan));
+  }
+  if (covered_[t] == 0 && !covers_region(scan, centre, radius)) return;
+  index_.within(centre, radius, neighbours_);
+  if (neighbours_.empty()) return;
+  const double time = std::max(nearest_time(centre), prior.time);
+  const ImmEstimate predicted = manoeuvre_prediction(prior, time);
+  if (for_update) predicted_[t] = filter_.predict(track.estimate, time);
+  for (const int j : neighbours_) {
+    const PlotHypothesis m = manoeuvre_->hypothesise(predicted, plots_[j]);
+    if (!m.usable || m.min_nis > manoeuvre_threshold_[plots_[j].model.size()]) continue;
+    // Only an updating pair needs the plot against the track's own IMM prediction.
+    PlotHypothesis hypothesis;
+    if (for_update) {
+      hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
+      if (!hypothesis.usable) continue;
+    }
+    manoeuvre_candidates_.push_back({t, j, std::move(hypothesis), m.likelihood});
+  }
+}
+
+void PointTracker::update_father(int t, std::span<const int> candidates,
+                                 std::span<const double> beta_plots, double beta_miss,
+                                 TrackFrame& frame) {
+  PointTrack& father = tracks_[t];
+  const bool firm = is_reported_as_firm(father.life.status);
+  update_track(t, candidates, beta_plots, beta_miss, frame);
+  if (!firm || father.life.status != TrackStatus::kDeleted) return;
+  // Deleted by its life: it lives on, coasting, while branches may replace it.
+  father.life.status = TrackStatus::kCoasting;
+  if (!father.doomed) {
+    father.doomed = batches_;
+    add_event(frame, "suspended", father.id,
+              "deleted by its track life; kept unreported while a branch may replace it");
+  }
+  std::erase_if(frame.events,
+                [&](const TrackEvent& e) { return e.type == "deleted" && e.track == father.id; });
+}
+
+void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
+  const std::vector<BranchPair> confirmed = confirm_pairs(
+      branch_pairs_, static_cast<int>(tracks_.size()), static_cast<int>(plots_.size()));
+  for (const BranchPair& pair : confirmed) {
+    // An earlier decision of this batch may have removed the track.
+    if (tracks_[pair.track].life.status == TrackStatus::kDeleted) continue;
+    switch (pair.kind) {
+      case PairKind::kFatherNonManoeuvre: {  // §2.3 (1), rule 5
+        PointTrack& father = tracks_[pair.track];
+        father.last_plot = plots_[pair.plot];
+        father.last_plot_batch = batches_;
+        used_by_branch_[pair.plot] = 1;
+        changes_.clear();
+        tree_.release_branches(father.id, changes_);
+        apply(changes_,
+              name(BranchType::kFather, father.id) + " took plot " +
+                  std::to_string(plots_[pair.plot].plot_id) + " (rule 5)",
+              report, frame);
+        break;
+      }
+      case PairKind::kSonNonManoeuvre:    // §2.3 (2), rules 8 and 10
+      case PairKind::kGrandsonManoeuvre:  // §2.3 (3), rules 9 and 10
+        update_branch(pair, report, frame);
+        break;
+      case PairKind::kSonManoeuvre:     // §2.3 (4), rule 7
+      case PairKind::kFatherManoeuvre:  // §2.3 (5), rule 6
+        create_branch(pair, report, frame);
+        break;
+    }
+  }
+}
+
+void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame) {
+  const int t = pair.track;
+  const bool non_manoeuvre = pair.kind == PairKind::kSonNonManoeuvre;
+  SoftUpdate& u = branch_updates_[static_cast<std::size_t>(t)];
+  PointTrack& branch = tracks_[t];
+  const std::int64_t number = branch.id;
+  const BranchType type = branch.branch;
+  const double likelihood_ratio =
+      soft_update(t, non_manoeuvre ? candidates_ : manoeuvre_candidates_, u.candidates, u.beta,
+                  u.miss, number, frame);
+  branch.quality = 0.8 * branch.quality + 0.2 * (1.0 - u.miss);
+  branch.last_plot = plots_[pair.plot];
+  branch.last_plot_batch = batches_;
+  branch.score += log_of(pair.probability);
+  touched_[static_cast<std::size_t>(t)] = 1;
+  used_by_branch_[pair.plot] = 1;
+  const std::string plot = std::to_string(plots_[pair.plot].plot_id);
+  const double spread = position_spread(filter_.combine(branch.estimate), layout_.dims);
+  if (branch.branch == BranchType::kFather) {  // made independent earlier in this batch
+    update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
+                     profile_.association.gate_probability, profile_.track_life);
+    const LifeChange change = advance_life(branch.life, true, spread, profile_.track_life);
+    if (change.confirmed) add_event(frame, "confirmed", number, "");
+    return;
+  }
+  if (non_manoeuvre) {  // rule 8
+    tree_.mark_non_manoeuvre_update(number);
+    changes_.clear();
+    tree_.prune_children(number, changes_);
+    apply(changes_, name(type, number) + " took plot " + plot + " (rule 8)", report, frame);
+  }
+  // Rule 10: every branch update is followed by the confirmation test.
+  const LifeChange change = advance_life(branch.life, true, spread, branch_life_);
+  changes_.clear();
+  if (change.confirmed) {
+    tree_.promote(number, changes_);
+    apply(changes_, "confirmed with plot " + plot + " (rule 10)", report, frame);
+  } else if (change.deleted) {
+    tree_.remove(number, changes_);
+    apply(changes_, "position spread too large", report, frame);
+  }
+}
+
+void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame) {
+  const config::BranchingSpec& spec = profile_.branching;
+  const PointTrack& parent = tracks_[pair.track];
+  const bool of_father = parent.branch == BranchType::kFather;
+  if (of_father && !may_start_sons(parent)) return;
+  if (!tree_.can_branch(parent.id, spec.max_children)) return;  // rules 6-7: room left
+  // A son starts at its father's latest update (rule 6), a grandson at its son's first plot
+  // (rule 7): plot-to-plot manoeuvre starts (§3.3).
+  const std::optional<PlotMeasurement>& start = of_father ? parent.last_plot : parent.first_plot;
+  const std::uint64_t start_batch = of_father ? parent.last_plot_batch : parent.first_plot_batch;
+  const PlotMeasurement& plot = plots_[pair.plot];
+  if (!start || !(plot.time > start->time)) return;
+  const std::int64_t parent_id = parent.id;
+  const BranchType parent_type = parent.branch;
+  const double parent_quality = parent.quality;
+  const double score = parent.score + log_of(pair.probability);
+  const std::int64_t father = tree_.father_of(parent_id);
+  if (!make_room(father, parent_id, score, plot.plot_id, report, frame)) return;
+
+  Initiation initiation;
+  initiation.plots = {*start, plot};
+  initiation.scans = static_cast<int>(batches_ - start_batch + 1);
+  PointTrack branch;
+  branch.id = next_id_++;
+  branch.branch = of_father ? BranchType::kSon : BranchType::kGrandson;
+  branch.life = initiated_life(2, initiation.scans);
+  branch.estimate = start_estimate(initiation, branch.life);
+  branch.quality = parent_quality;
+  branch.first_plot = *start;
+  branch.first_plot_batch = start_batch;
+  branch.last_plot = plot;
+  branch.last_plot_batch = batches_;
+  branch.score = score;
+  tree_.add_branch(branch.id, parent_id);
+  used_by_branch_[pair.plot] = 1;
+  frame.associations.push_back({branch.id, plot.plot_id, pair.probability});
+  add_event(frame, "branch_created", father,
+            name(branch.branch, branch.id) + " of " + name(parent_type, parent_id) + " from plot " +
+                std::to_string(plot.plot_id));
+  ++report.branches_created;
+  slots_[branch.id] = static_cast<int>(tracks_.size());
+  tracks_.push_back(std::move(branch));
+  touched_.push_back(1);
+}
+
+bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double score,
+                             std::int64_t plot_id, ScanReport& report, TrackFrame& frame) {
+  const config::BranchingSpec& spec = profile_.branching;
+  for (const bool per_father : {true, false}) {
+    const int count = per_father ? tree_.branch_count(father) : tree_.total_branches();
+    const int cap = per_father ? spec.max_branches_per_father : spec.max_total_branches;
+    if (count < cap) continue;
+    const std::string where = per_father ? "the cap of " + std::to_string(cap) + " per father"
+                                         : "the cap of " + std::to_string(cap) + " in total";
+    // The least likely branch (lowest score; the newest on a tie), never the new one's parent.
+    int least = -1;
+    for (std::size_t i = 0; i < tracks_.size(); ++i) {
+      const PointTrack& b = tracks_[i];
+      if (b.branch == BranchType::kFather || b.life.status == TrackStatus::kDeleted ||
+          b.id == parent || (per_father && tree_.father_of(b.id) != father)) {
+        continue;
+      }
+      if (least < 0 || b.score < tracks_[least].score ||
+          (b.score == tracks_[least].score && b.id > tracks_[least].id)) {
+        least = static_cast<int>(i);
+      }
+    }
+    if (least < 0 || tracks_[least].score >= score) {
+      add_event(
+          frame, "branch_pruned", father,
+          "branch from plot " + std::to_string(plot_id) + " not created: least likely at " + where);
+      ++report.branches_pruned;
+      return false;
+    }
+    changes_.clear();
+    tree_.remove(tracks_[least].id, changes_);
+    apply(changes_, "least likely at " + where, report, frame);
+  }
+  return true;
+}
+
+void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
+  const double miss = log_of(1.0 - profile_.association.detection_probability);
+  for (std::size_t i = 0; i < tracks_.size(); ++i) {
+    PointTrack& branch = tracks_[i];
+    if (branch.branch == BranchType::kFather || branch.life.status == TrackStatus::kDeleted ||
+        touched_[i] != 0 || (i < covered_.size() && covered_[i] == 0)) {
+      continue;
+    }
+    branch.estimate = filter_.predict(branch.estimate, std::max(frame.time, branch.estimate.time));
+    branch.score += miss;
+    const double spread = position_spread(filter_.combine(branch.estimate), layout_.dims);
+    if (advance_life(branch.life, false, spread, branch_life_).deleted) {
+      changes_.clear();
+      tree_.remove(branch.id, changes_);
+      apply(changes_, "no plot", report, frame);
+    }
+  }
+  // A doomed father that may start no more sons goes with its last branch.
+  for (PointTrack& father : tracks_) {
+    if (father.branch != BranchType::kFather || father.replaced || !father.doomed ||
+        father.life.status == TrackStatus::kDeleted || tree_.branch_count(father.id) > 0 ||
+        may_start_sons(father)) {
+      continue;
+    }
+    father.life.status = TrackStatus::kDeleted;
+    add_event(frame, "deleted", father.id, "no branch left to replace it");
+    changes_.clear();
+    tree_.remove(father.id, changes_);
+  }
+}
+
+void PointTracker::apply(std::span<const BranchChange> changes, const std::string& reason,
+                         ScanReport& report, TrackFrame& frame) {
+  for (const BranchChange& change : changes) {
+    const int i = slot(change.track);
+    if (i < 0) continue;
+    PointTrack& track = tracks_[i];
+    const std::string who =
+        name(change.type, change.track) + " of " +
+        name(change.type == BranchType::kGrandson ? BranchType::kSon : BranchType::kFather,
+             change.parent);
+    switch (change.kind) {
+      case BranchChange::Kind::kPruned:
+        track.life.status = TrackStatus::kDeleted;
+        add_event(frame, "branch_pruned", change.father, who + ": " + reason);
+        ++report.branches_pruned;
+        break;
+      case BranchChange::Kind::kIndependent:
+        track.branch = BranchType::kFather;
+        add_event(frame, "initiated", change.track, "independent " + who + ": " + reason);
+        ++report.initiated;
+        break;
+      case BranchChange::Kind::kPromoted: {
+        const int f = slot(change.father);
+        if (f >= 0) {
+          PointTrack& old = tracks_[f];
+          // A father its life deleted in this batch lives on in the branch: no "deleted".
+          if (old.life.status == TrackStatus::kDeleted) {
+            std::erase_if(frame.events, [&](const TrackEvent& e) {
+              return e.type == "deleted" && e.track == change.father;
+            });
+          }
+          old.replaced = true;
+          old.life.status = TrackStatus::kDeleted;
+          track.quality = old.quality;
+        }
+        track.branch = BranchType::kFather;
+        track.id = change.father;
+        slots_.erase(change.track);
+        slots_[change.father] = i;
+        add_event(frame, "branch_promoted", change.father,
+                  who + " replaces " + name(BranchType::kFather, change.father) + ": " + reason);
+        ++report.branches_promoted;
+        break;
+      }
+    }
+  }
+}
+
+}  // namespace skytrack

@@ -1,0 +1,313 @@
+// Branch tracking in the point tracker, scan by scan: paper 003 §1 rules (5)-(10) and §2.3
+// (1)-(5) on small scripted plot sequences (2-D Cartesian plots, no noise, no clutter).
+//
+// Every script starts the same way: a target at 100 m/s along +x gives plots at x = 0, 100,
+// 200, 300 m (t = 0..3 s), so track 1 is initiated at t = 2 and confirmed at t = 3. The
+// non-manoeuvre gate (CV, 1 m/s^2, P_G 0.999) is a few tens of metres wide; the manoeuvre
+// gate (CV, 300 m/s^2, P_G 0.9999) several hundred, so a plot 300 m off the prediction
+// lies in the manoeuvre gate only.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "skytrack/tracking/point_tracker.hpp"
+
+namespace skytrack {
+namespace {
+
+config::TrackingProfile branch_profile() {
+  config::TrackingProfile p;
+  p.identity = {"branch-test", "1", ""};
+  p.dimension = 2;
+  p.motion_models = {
+      {.name = "cv", .type = config::MotionModelType::kConstantVelocity, .accel_sigma = 1.0}};
+  p.mode_transition = {{1.0}};
+  p.initial_mode_probabilities = {1.0};
+  p.association.clutter_density = 1e-8;  // [1/m^2]
+  p.branching.manoeuvre_models = {"cv"};
+  p.branching.manoeuvre_accel_sigma = 300.0;
+  return p;
+}
+
+struct Script {
+  explicit Script(const config::TrackingProfile& profile)
+      : tracker(*PointTracker::create(profile, 2)) {}
+
+  /// One scan at time t with plots (x, y); plot ids are 100 t + 1, 100 t + 2, ...
+  const TrackFrame& scan(double t, std::vector<Eigen::Vector2d> points) {
+    PlotScan s;
+    s.sensor = 1;
+    s.scan = static_cast<std::uint64_t>(t);
+    s.time = t;
+    s.sigma.x = 10.0;
+    s.sigma.y = 10.0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      Plot plot;
+      plot.id = static_cast<std::int64_t>(100 * t) + static_cast<std::int64_t>(k) + 1;
+      plot.form = PlotForm::kCartesian;
+      plot.x = points[k].x();
+      plot.y = points[k].y();
+      s.plots.push_back(plot);
+    }
+    report = ScanReport{};
+    tracker.process(s, frame, report);
+    return frame;
+  }
+
+  /// Track 1, confirmed at t = 3 (x = 300, y = 0, 100 m/s east).
+  void start() {
+    for (int t = 0; t <= 3; ++t) scan(t, {{100.0 * t, 0.0}});
+    ASSERT_EQ(reported(), (std::vector<std::int64_t>{1}));
+    ASSERT_EQ(frame.tracks[0].status, TrackStatus::kConfirmed);
+  }
+
+  std::vector<std::int64_t> reported() const {
+    std::vector<std::int64_t> ids;
+    for (const TrackReport& t : frame.tracks) ids.push_back(t.id);
+    return ids;
+  }
+  const TrackReport* track(std::int64_t id) const {
+    for (const TrackReport& t : frame.tracks) {
+      if (t.id == id) return &t;
+    }
+    return nullptr;
+  }
+  /// Events of one type, as "track: detail".
+  std::vector<std::string> events(const std::string& type) const {
+    std::vector<std::string> out;
+    for (const TrackEvent& e : frame.events) {
+      if (e.type == type) out.push_back(std::to_string(e.track) + ": " + e.detail);
+    }
+    return out;
+  }
+  bool associated(std::int64_t track, std::int64_t plot) const {
+    return std::any_of(frame.associations.begin(), frame.associations.end(),
+                       [&](const Association& a) { return a.track == track && a.plot == plot; });
+  }
+  int live_branches() const {
+    return static_cast<int>(
+        std::count_if(tracker.tracks().begin(), tracker.tracks().end(), [](const PointTrack& t) {
+          return t.branch != BranchType::kFather && t.life.status != TrackStatus::kDeleted;
+        }));
+  }
+
+  PointTracker tracker;
+  TrackFrame frame;
+  ScanReport report;
+};
+
+TEST(BranchTracker, FatherManoeuvrePairStartsAHiddenSonFromTheFathersLastPlot) {
+  // GIVEN confirmed track 1
+  Script s(branch_profile());
+  s.start();
+  // WHEN the next plot is 300 m off its prediction (manoeuvre gate only)
+  s.scan(4, {{400.0, 300.0}});
+  // THEN son 2 is created from that plot (rule 6, §2.3 (5)) and only the father is reported
+  EXPECT_EQ(s.events("branch_created"),
+            (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_EQ(s.frame.tracks[0].status, TrackStatus::kCoasting);
+  EXPECT_TRUE(s.associated(2, 401));  // the branch's pair is in the associations
+  const BranchNode* son = s.tracker.branch_tree().find(2);
+  ASSERT_NE(son, nullptr);
+  EXPECT_EQ(son->type, BranchType::kSon);
+  EXPECT_EQ(son->parent, 1);
+  EXPECT_EQ(s.report.branches, 1);
+  // AND the son starts at the father's latest update point (x = 300 at t = 3): its velocity
+  // is the chord from there to the new plot
+  const auto& tracks = s.tracker.tracks();
+  const auto it = std::find_if(tracks.begin(), tracks.end(),
+                               [](const PointTrack& t) { return t.branch == BranchType::kSon; });
+  ASSERT_NE(it, tracks.end());
+  ASSERT_TRUE(it->first_plot.has_value());
+  EXPECT_EQ(it->first_plot->plot_id, 301);
+  const Gaussian g = ImmFilter::from_profile(branch_profile(), 2)->combine(it->estimate);
+  EXPECT_NEAR(g.mean[StateLayout::velocity(0)], 100.0, 1.0);
+  EXPECT_NEAR(g.mean[StateLayout::velocity(1)], 300.0, 1.0);
+}
+
+TEST(BranchTracker, ConfirmedSonReplacesTheFatherAndKeepsItsNumber) {
+  // GIVEN son 2 of track 1 (as above)
+  Script s(branch_profile());
+  s.start();
+  s.scan(4, {{400.0, 300.0}});
+  // WHEN the son's next plot falls in its non-manoeuvre gate
+  s.scan(5, {{500.0, 600.0}});
+  // THEN the son is updated, passes confirmation and replaces the father (rules 8, 10;
+  // §2.3 (2)): track 1 is now where the son is, the father is gone, no number changes
+  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.events("branch_promoted")[0].rfind("1: son 2 of track 1 replaces track 1", 0), 0u);
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  ASSERT_NE(s.track(1), nullptr);
+  EXPECT_EQ(s.track(1)->status, TrackStatus::kConfirmed);
+  EXPECT_NEAR(s.track(1)->position.y(), 600.0, 30.0);
+  EXPECT_TRUE(s.associated(2, 501));
+  EXPECT_TRUE(s.events("deleted").empty());
+  EXPECT_EQ(s.live_branches(), 0);
+  EXPECT_FALSE(s.tracker.branch_tree().contains(2));
+  EXPECT_EQ(s.tracker.branch_tree().find(1)->type, BranchType::kFather);
+  // AND the track goes on along the son's line under number 1
+  s.scan(6, {{600.0, 900.0}});
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_TRUE(s.associated(1, 601));
+}
+
+TEST(BranchTracker, FatherNonManoeuvreUpdateDeletesSonsWithoutOne) {
+  // GIVEN son 2 of track 1, never updated by a non-manoeuvre pair
+  Script s(branch_profile());
+  s.start();
+  s.scan(4, {{400.0, 300.0}});
+  // WHEN the father's own next plot arrives (the 300 m plot was a false alarm)
+  s.scan(5, {{500.0, 0.0}});
+  // THEN the father is updated and the son deleted (rule 5, §2.3 (1))
+  EXPECT_EQ(s.events("branch_pruned"),
+            (std::vector<std::string>{"1: son 2 of track 1: track 1 took plot 501 (rule 5)"}));
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_TRUE(s.associated(1, 501));
+  EXPECT_NEAR(s.track(1)->position.y(), 0.0, 30.0);
+  EXPECT_EQ(s.live_branches(), 0);
+  EXPECT_TRUE(s.tracker.branch_tree().find(1)->children.empty());
+}
+
+TEST(BranchTracker, SonWithANonManoeuvreUpdateBecomesAnIndependentFather) {
+  // GIVEN confirmation needs 4 of 4 scans, so a son survives one update unconfirmed
+  config::TrackingProfile profile = branch_profile();
+  profile.track_life.confirm_m = 4;
+  Script s(profile);
+  for (int t = 0; t <= 3; ++t) s.scan(t, {{100.0 * t, 0.0}});
+  ASSERT_EQ(s.frame.tracks.at(0).status, TrackStatus::kConfirmed);
+  s.scan(4, {{400.0, 300.0}});  // son 2
+  s.scan(5, {{500.0, 600.0}});  // son 2's non-manoeuvre update: 3 of 4, not confirmed
+  ASSERT_TRUE(s.events("branch_promoted").empty());
+  ASSERT_TRUE(s.tracker.branch_tree().find(2)->non_manoeuvre_updated);
+  // WHEN the father takes its own plot again, and the son its own
+  s.scan(6, {{600.0, 0.0}, {600.0, 900.0}});
+  // THEN the son leaves the tree as father 2 with its own number (rule 5, §2.3 (1)) and both
+  // are reported
+  EXPECT_EQ(s.events("initiated").size(), 1u);
+  EXPECT_EQ(s.events("initiated")[0].rfind("2: independent son 2 of track 1", 0), 0u);
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1, 2}));
+  EXPECT_NEAR(s.track(1)->position.y(), 0.0, 30.0);
+  EXPECT_NEAR(s.track(2)->position.y(), 900.0, 30.0);
+  EXPECT_EQ(s.tracker.branch_tree().find(2)->type, BranchType::kFather);
+  EXPECT_EQ(s.live_branches(), 0);
+}
+
+TEST(BranchTracker, SonManoeuvrePairStartsAGrandsonThatReplacesTheFather) {
+  // GIVEN son 2 of track 1
+  Script s(branch_profile());
+  s.start();
+  s.scan(4, {{400.0, 300.0}});
+  // WHEN the next plot misses the son's non-manoeuvre gate but lies in its manoeuvre gate
+  s.scan(5, {{500.0, 450.0}});
+  // THEN grandson 3 is created from it (rule 7, §2.3 (4)), starting at the son's first plot
+  // (x = 300 at t = 3), so its velocity is (100, 225) m/s
+  EXPECT_EQ(s.events("branch_created"),
+            (std::vector<std::string>{"1: grandson 3 of son 2 from plot 501"}));
+  const BranchNode* grandson = s.tracker.branch_tree().find(3);
+  ASSERT_NE(grandson, nullptr);
+  EXPECT_EQ(grandson->type, BranchType::kGrandson);
+  EXPECT_EQ(grandson->parent, 2);
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  // WHEN the grandson's next plot falls in its manoeuvre gate
+  s.scan(6, {{600.0, 675.0}});
+  // THEN it is updated (rule 9), confirmed and replaces the father under number 1; the son
+  // (no non-manoeuvre update) is deleted (rule 10, §2.3 (3))
+  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.events("branch_promoted")[0].rfind("1: grandson 3 of son 2 replaces track 1", 0), 0u);
+  EXPECT_EQ(s.events("branch_pruned").size(), 1u);
+  EXPECT_EQ(s.events("branch_pruned")[0].rfind("1: son 2 of track 1", 0), 0u);
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_NEAR(s.track(1)->position.y(), 675.0, 30.0);
+  EXPECT_EQ(s.live_branches(), 0);
+}
+
+TEST(BranchTracker, GrandsonIsUpdatedThroughItsManoeuvreGate) {
+  // GIVEN grandson 3 (as above)
+  Script s(branch_profile());
+  s.start();
+  s.scan(4, {{400.0, 300.0}});
+  s.scan(5, {{500.0, 450.0}});
+  ASSERT_TRUE(s.tracker.branch_tree().contains(3));
+  // WHEN a plot lies exactly on its prediction
+  s.scan(6, {{600.0, 675.0}});
+  // THEN its association is a manoeuvre one: the grandson was updated (it replaced the
+  // father), and no non-manoeuvre rule fired for it (rule 8 prunes only grandsons of an
+  // updated son)
+  EXPECT_TRUE(s.associated(3, 601));
+  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+}
+
+TEST(BranchTracker, TwoPlotsInTheManoeuvreGateStartTwoSonsAndTheLikelierWins) {
+  // GIVEN track 1 and two plots in its manoeuvre gate only (paper 003 §4.3)
+  Script s(branch_profile());
+  s.start();
+  s.scan(4, {{400.0, 300.0}, {400.0, -350.0}});
+  EXPECT_EQ(s.events("branch_created").size(), 2u);
+  EXPECT_EQ(s.tracker.branch_tree().branch_count(1), 2);
+  // WHEN the next plot continues one of them
+  s.scan(5, {{500.0, -700.0}});
+  // THEN that son replaces the father under number 1 and the other son is deleted
+  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.events("branch_pruned").size(), 1u);
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_NEAR(s.track(1)->position.y(), -700.0, 30.0);
+  EXPECT_EQ(s.live_branches(), 0);
+}
+
+TEST(BranchTracker, AtTheBranchCapTheLeastLikelyBranchIsPruned) {
+  // GIVEN at most one branch per father, and two plots in track 1's manoeuvre gate, one
+  // nearer its prediction (more probable)
+  config::TrackingProfile profile = branch_profile();
+  profile.branching.max_branches_per_father = 1;
+  Script s(profile);
+  s.start();
+  s.scan(4, {{400.0, 150.0}, {400.0, -400.0}});
+  // THEN one son is created and the other decision is a pruning at the cap
+  EXPECT_EQ(s.events("branch_created"),
+            (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
+  ASSERT_EQ(s.events("branch_pruned").size(), 1u);
+  EXPECT_NE(s.events("branch_pruned")[0].find("cap of 1 per father"), std::string::npos);
+  EXPECT_EQ(s.tracker.branch_tree().branch_count(1), 1);
+}
+
+TEST(BranchTracker, NoRoomLeftUnderMaxChildrenCreatesNoMoreSons) {
+  config::TrackingProfile profile = branch_profile();
+  profile.branching.max_children = 1;
+  Script s(profile);
+  s.start();
+  s.scan(4, {{400.0, 300.0}, {400.0, -350.0}});
+  EXPECT_EQ(s.events("branch_created").size(), 1u);
+  EXPECT_EQ(s.tracker.branch_tree().branch_count(1), 1);
+}
+
+TEST(BranchTracker, BranchWithoutPlotsIsPrunedByItsTrackLife) {
+  Script s(branch_profile());
+  s.start();
+  s.scan(4, {{400.0, 300.0}});  // son 2 (tentative, deleted after 2 consecutive misses)
+  s.scan(5, {});
+  EXPECT_TRUE(s.events("branch_pruned").empty());
+  s.scan(6, {});
+  EXPECT_EQ(s.events("branch_pruned"), (std::vector<std::string>{"1: son 2 of track 1: no plot"}));
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+}
+
+TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {
+  // GIVEN the same script with branching off
+  config::TrackingProfile profile = branch_profile();
+  profile.branching.enabled = false;
+  Script s(profile);
+  s.start();
+  s.scan(4, {{400.0, 300.0}});
+  s.scan(5, {{500.0, 600.0}});
+  // THEN no branch exists and no branch event is written
+  for (const TrackEvent& e : s.frame.events)
+    EXPECT_EQ(e.type.rfind("branch_", 0), std::string::npos);
+  EXPECT_EQ(s.live_branches(), 0);
+  EXPECT_EQ(s.report.branches, 0);
+}
+
+}  // namespace
+}  // namespace skytrack

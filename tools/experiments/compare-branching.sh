@@ -1,0 +1,170 @@
+#!/usr/bin/env bash
+# Paper 003's three experiments, Monte Carlo, branch tracking on against off (plain IMM-JPDA).
+#
+# For each seed and each shipped scenario config/scenarios/paper003_exp{1,2,3}_*.yaml:
+# `skytrack simulate` once, `skytrack track` the same plots with the default profile
+# (branching on) and with config/profiles/no_branching.yaml (off), `skytrack eval --json`
+# both (cut-off 2000 m, about twice a plot's 3-D error at 80 km), and print one Markdown
+# table. Runs go two at a time (the machine has two cores). Builds nothing: the binary is
+# $SKYTRACK (default build-rel/tools/skytrack/skytrack, a Release build, under the
+# repository root).
+#
+# Usage: tools/experiments/compare-branching.sh [--seeds N] [--first-seed S] [--jobs J]
+#            [--out DIR]
+#   --seeds N       seeds per scenario (default 100): S, S+1, ..., S+N-1
+#   --first-seed S  first seed (default 1)
+#   --jobs J        runs at once (default 2)
+#   --out DIR       plots, truth, tracks and scores (default out/experiments/compare-branching;
+#                   out/ is git-ignored)
+# Columns, per target and run (mean over the seeds), from the scan its first firm
+# (confirmed or coasting) track is within 2000 m of it (the track "on" it is the nearest):
+#   number changes   the number on the target changes (a re-initiation is one of them: the
+#                    new number is a new track); "without number change" = % of targets
+#   scans lost       scans with no firm track on the target (coasting far off, or none)
+#   eval id changes / fragmentations   `skytrack eval` over the whole run (start-up included)
+#   number survives  exp. 2: the number on the target at t = 100 s (just before its 3
+#                    missed scans) is the one at t = 150 s (after the re-detection at
+#                    137.5 s); exp. 3: from t = 90 s (in the U-turn) to t = 150 s
+#   branch won       exp. 3: a branch_promoted event on that number in t = [100, 150] s
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/../.." && pwd)
+skytrack=${SKYTRACK:-$root/build-rel/tools/skytrack/skytrack}
+seeds=100
+first_seed=1
+jobs=2
+out="$root/out/experiments/compare-branching"
+
+usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; }
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --seeds) seeds=$2; shift 2 ;;
+    --first-seed) first_seed=$2; shift 2 ;;
+    --jobs) jobs=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "compare-branching: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+[[ "$seeds" =~ ^[1-9][0-9]*$ ]] || { echo "compare-branching: --seeds must be >= 1" >&2; exit 2; }
+[[ "$first_seed" =~ ^[0-9]+$ ]] || { echo "compare-branching: bad --first-seed" >&2; exit 2; }
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "compare-branching: bad --jobs" >&2; exit 2; }
+[[ -x "$skytrack" ]] || { echo "compare-branching: no skytrack binary at $skytrack (set SKYTRACK)" >&2; exit 2; }
+
+scenarios=(paper003_exp1_racetrack_figure_eight paper003_exp2_missed_in_clutter paper003_exp3_uturn)
+off_profile="$root/config/profiles/no_branching.yaml"
+"$skytrack" check-profile "$off_profile" >/dev/null
+mkdir -p "$out"
+
+# One run: simulate, track on and off, evaluate. Arguments: scenario seed.
+one_run() {
+  local scen=$1 seed=$2
+  local base="$out/$scen.$seed"
+  "$skytrack" simulate --scenario "$root/config/scenarios/$scen.yaml" --plots "$base.plots.jsonl" \
+    --truth "$base.truth.jsonl" --seed "$seed" >/dev/null 2>"$base.simulate.log"
+  "$skytrack" track --plots "$base.plots.jsonl" --out "$base.on.tracks.jsonl" --quiet \
+    2>"$base.on.track.log"
+  "$skytrack" track --profile "$off_profile" --plots "$base.plots.jsonl" \
+    --out "$base.off.tracks.jsonl" --quiet 2>"$base.off.track.log"
+  for mode in on off; do
+    "$skytrack" eval --truth "$base.truth.jsonl" --tracks "$base.$mode.tracks.jsonl" \
+      --cutoff 2000 --json >"$base.$mode.eval.json"
+  done
+}
+export -f one_run
+export skytrack root out off_profile
+
+for scen in "${scenarios[@]}"; do
+  for ((s = first_seed; s < first_seed + seeds; ++s)); do echo "$scen $s"; done
+done | xargs -P "$jobs" -n 2 bash -c 'one_run "$0" "$1"'
+
+python3 - "$out" "$first_seed" "$seeds" "${scenarios[@]}" <<'PY'
+import json, math, sys
+
+out, first, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+scenarios = sys.argv[4:]
+seeds = range(first, first + count)
+FIRM = ("confirmed", "coasting")
+GATE = 2000.0  # [m] a firm track this close to a target is "on" it (the eval cut-off)
+
+def lines(path):
+    return [json.loads(l) for l in open(path)]
+
+def on_target(truth_frame, track_frame, target):
+    """Number of the nearest firm track within GATE of the target, or None."""
+    obj = next((o for o in truth_frame["objects"] if o["id"] == target), None)
+    if obj is None:
+        return None
+    best = None
+    for t in track_frame["tracks"]:
+        if t["status"] not in FIRM:
+            continue
+        d = math.dist(obj["position"], t["position"])
+        if d <= GATE and (best is None or d < best[0]):
+            best = (d, t["id"])
+    return best and best[1]
+
+def continuity(truth, tracks, target):
+    """After the target's first firm track: number changes, and scans without a firm track."""
+    numbers = [on_target(a, b, target) for a, b in zip(truth, tracks)]
+    changes, gaps, current = 0, 0, None
+    for n in numbers:
+        if n is None:
+            gaps += current is not None
+        elif current is None:
+            current = n
+        elif n != current:
+            changes += 1
+            current = n
+    return numbers, changes, gaps
+
+def at(frames, time):
+    return min(range(len(frames)), key=lambda i: abs(frames[i]["time"] - time))
+
+def pct(xs):
+    return 100.0 * sum(xs) / max(len(xs), 1)
+
+def mean(xs):
+    return sum(xs) / max(len(xs), 1)
+
+rows = []
+for scen in scenarios:
+    for mode in ("on", "off"):
+        ids, frags, changes, gaps, clean, survive, won = [], [], [], [], [], [], []
+        for seed in seeds:
+            base = f"{out}/{scen}.{seed}"
+            score = json.load(open(f"{base}.{mode}.eval.json"))
+            for c in score["continuity"]:
+                ids.append(c["id_changes"])
+                frags.append(c["fragmentations"])
+            truth = lines(base + ".truth.jsonl")
+            tracks = lines(f"{base}.{mode}.tracks.jsonl")
+            targets = sorted({o["id"] for f in truth for o in f["objects"]})
+            for target in targets:
+                numbers, n_changes, n_gaps = continuity(truth, tracks, target)
+                changes.append(n_changes)
+                gaps.append(n_gaps)
+                clean.append(n_changes == 0)
+            if "exp2" in scen:  # before the 3 misses and after the re-detection at 137.5 s
+                a, b = numbers[at(truth, 100.0)], numbers[at(truth, 150.0)]
+                survive.append(a is not None and a == b)
+            if "exp3" in scen:  # in the U-turn and after the two-plot scan
+                a, b = numbers[at(truth, 90.0)], numbers[at(truth, 150.0)]
+                survive.append(a is not None and a == b)
+                won.append(any(e["type"] == "branch_promoted" and e["track"] == a
+                               and 100.0 <= f["time"] <= 150.0
+                               for f in tracks for e in f["events"]))
+        rows.append((scen, mode, mean(changes), mean(gaps), pct(clean), mean(ids), mean(frags),
+                     pct(survive) if survive else None, pct(won) if won else None))
+
+print(f"Seeds {first}-{first + count - 1}: {count} runs per scenario and tracker. Per target, "
+      f"from its first firm track on (within {GATE:.0f} m):\n")
+print("| scenario | branching | number changes / target | scans lost / target | "
+      "targets without number change % | eval id changes / target | eval fragmentations / "
+      "target | number survives % | branch won % |")
+print("|---|---|---|---|---|---|---|---|---|")
+for scen, mode, ch, gp, cl, ids, fr, sv, wn in rows:
+    cell = lambda v: "—" if v is None else f"{v:.0f}"
+    print(f"| {scen} | {mode} | {ch:.2f} | {gp:.2f} | {cl:.0f} | {ids:.2f} | {fr:.2f} | "
+          f"{cell(sv)} | {cell(wn)} |")
+PY
