@@ -294,6 +294,47 @@ TEST(BranchTracker, BranchWithoutPlotsIsPrunedByItsTrackLife) {
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
 }
 
+TEST(BranchTracker, FatherDeletedByItsLifeWaitsUnreportedForItsSon) {
+  // GIVEN a position-spread limit that one missed scan exceeds
+  config::TrackingProfile profile = branch_profile();
+  profile.track_life.delete_position_sigma = 12.0;
+  Script s(profile);
+  s.start();
+  // WHEN track 1 misses its plot and a plot lies in its manoeuvre gate
+  s.scan(4, {{400.0, 300.0}});
+  // THEN it is suspended (not reported, not deleted) and son 2 starts from the plot
+  EXPECT_EQ(s.events("suspended").size(), 1u);
+  EXPECT_TRUE(s.events("deleted").empty());
+  EXPECT_TRUE(s.reported().empty());
+  EXPECT_EQ(s.events("branch_created"),
+            (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
+  // WHEN the son's next plot arrives, THEN the son replaces it and number 1 is back
+  s.scan(5, {{500.0, 600.0}});
+  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_NEAR(s.track(1)->position.y(), 600.0, 30.0);
+}
+
+TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
+  config::TrackingProfile profile = branch_profile();
+  profile.track_life.delete_position_sigma = 12.0;
+  Script s(profile);
+  s.start();
+  s.scan(4, {});  // suspended, no plot to branch from
+  EXPECT_EQ(s.events("suspended").size(), 1u);
+  EXPECT_TRUE(s.reported().empty());
+  // THEN it is deleted (and reported so, once) when its misses reach
+  // delete_confirmed_misses without a branch
+  int deleted_at = 0;
+  for (int t = 5; t <= 12 && deleted_at == 0; ++t) {
+    s.scan(t, {});
+    if (!s.events("deleted").empty()) deleted_at = t;
+  }
+  EXPECT_EQ(deleted_at, 3 + profile.track_life.delete_confirmed_misses);
+  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_EQ(s.frame.tracks[0].status, TrackStatus::kDeleted);
+}
+
 TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {
   // GIVEN the same script with branching off
   config::TrackingProfile profile = branch_profile();
