@@ -304,7 +304,8 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   branch.id = next_id_++;
   branch.branch = of_father ? BranchType::kSon : BranchType::kGrandson;
   branch.life = initiated_life(2, initiation.scans);
-  branch.estimate = start_estimate(initiation, branch.life);
+  branch.estimate =
+      of_father ? son_start(pair.track, plot) : start_estimate(initiation, branch.life);
   branch.quality = parent_quality;
   branch.first_plot = *start;
   branch.first_plot_batch = start_batch;
@@ -321,6 +322,26 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   slots_[branch.id] = static_cast<int>(tracks_.size());
   tracks_.push_back(std::move(branch));
   touched_.push_back(1);
+}
+
+ImmEstimate PointTracker::son_start(int father, const PlotMeasurement& plot) const {
+  // The father's state from its latest update, predicted to the plot by the manoeuvre
+  // models (their wider process noise lets the plot turn the velocity), then updated with
+  // the plot: a start at the father's latest update that keeps what it knew of the speed.
+  const ImmEstimate m = manoeuvre_prediction(predicted_[father], plot.time);
+  const Gaussian g = manoeuvre_->combine(m);
+  const auto& probabilities = profile_.initial_mode_probabilities;
+  const ImmEstimate start =
+      filter_.initial(g,
+                      Eigen::Map<const Eigen::VectorXd>(
+                          probabilities.data(), static_cast<Eigen::Index>(probabilities.size())),
+                      m.time);
+  const PlotHypothesis h = filter_.hypothesise(start, plot);
+  if (!h.usable) return start;
+  const double one = 1.0;
+  return filter_.update(start, std::span(&h, 1), std::span(&one, 1), 0.0,
+                        profile_.association.detection_probability,
+                        profile_.association.gate_probability, clutter_density(plot, -1));
 }
 
 bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double score,

@@ -269,3 +269,18 @@ TEST(ProfileLoader, YamlSyntaxErrorGivesTheLine) {
 
 }  // namespace
 }  // namespace skytrack::config
+
+namespace skytrack::config {
+namespace {
+
+TEST(ProfileLoader, ManoeuvreAccelerationMustBePositive) {
+  EXPECT_THAT(error_of("branching:\n  manoeuvre_accel_sigma: 0\n"),
+              ::testing::HasSubstr("branching.manoeuvre_accel_sigma"));
+  const auto profile = parse_profile(
+      "profile: {name: p, version: '1'}\nbranching: {manoeuvre_accel_sigma: 35.5}\n", "p.yaml");
+  ASSERT_TRUE(profile) << profile.error().message;
+  EXPECT_DOUBLE_EQ(profile->branching.manoeuvre_accel_sigma, 35.5);
+}
+
+}  // namespace
+}  // namespace skytrack::config

@@ -4,8 +4,8 @@
 // Every script starts the same way: a target at 100 m/s along +x gives plots at x = 0, 100,
 // 200, 300 m (t = 0..3 s), so track 1 is initiated at t = 2 and confirmed at t = 3. The
 // non-manoeuvre gate (CV, 1 m/s^2, P_G 0.999) is a few tens of metres wide; the manoeuvre
-// gate (CV, 300 m/s^2, P_G 0.9999) several hundred, so a plot 300 m off the prediction
-// lies in the manoeuvre gate only.
+// gate (CV, 100 m/s^2, P_G 0.9999) about 250 m, so a plot 150 m off the prediction lies
+// in the manoeuvre gate only.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -27,7 +27,7 @@ config::TrackingProfile branch_profile() {
   p.initial_mode_probabilities = {1.0};
   p.association.clutter_density = 1e-8;  // [1/m^2]
   p.branching.manoeuvre_models = {"cv"};
-  p.branching.manoeuvre_accel_sigma = 300.0;
+  p.branching.manoeuvre_accel_sigma = 100.0;
   return p;
 }
 
@@ -102,8 +102,8 @@ TEST(BranchTracker, FatherManoeuvrePairStartsAHiddenSonFromTheFathersLastPlot) {
   // GIVEN confirmed track 1
   Script s(branch_profile());
   s.start();
-  // WHEN the next plot is 300 m off its prediction (manoeuvre gate only)
-  s.scan(4, {{400.0, 300.0}});
+  // WHEN the next plot is 150 m off its prediction (manoeuvre gate only)
+  s.scan(4, {{400.0, 150.0}});
   // THEN son 2 is created from that plot (rule 6, §2.3 (5)) and only the father is reported
   EXPECT_EQ(s.events("branch_created"),
             (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
@@ -115,8 +115,9 @@ TEST(BranchTracker, FatherManoeuvrePairStartsAHiddenSonFromTheFathersLastPlot) {
   EXPECT_EQ(son->type, BranchType::kSon);
   EXPECT_EQ(son->parent, 1);
   EXPECT_EQ(s.report.branches, 1);
-  // AND the son starts at the father's latest update point (x = 300 at t = 3): its velocity
-  // is the chord from there to the new plot
+  // AND the son starts from the father's latest update (plot 301 at t = 3): the father's
+  // state predicted by the manoeuvre models and updated with the new plot, so it sits on the
+  // plot and its velocity has turned towards it
   const auto& tracks = s.tracker.tracks();
   const auto it = std::find_if(tracks.begin(), tracks.end(),
                                [](const PointTrack& t) { return t.branch == BranchType::kSon; });
@@ -124,17 +125,19 @@ TEST(BranchTracker, FatherManoeuvrePairStartsAHiddenSonFromTheFathersLastPlot) {
   ASSERT_TRUE(it->first_plot.has_value());
   EXPECT_EQ(it->first_plot->plot_id, 301);
   const Gaussian g = ImmFilter::from_profile(branch_profile(), 2)->combine(it->estimate);
-  EXPECT_NEAR(g.mean[StateLayout::velocity(0)], 100.0, 1.0);
-  EXPECT_NEAR(g.mean[StateLayout::velocity(1)], 300.0, 1.0);
+  EXPECT_NEAR(g.mean[StateLayout::position(0)], 400.0, 15.0);
+  EXPECT_NEAR(g.mean[StateLayout::position(1)], 150.0, 15.0);
+  EXPECT_NEAR(g.mean[StateLayout::velocity(0)], 100.0, 20.0);
+  EXPECT_GT(g.mean[StateLayout::velocity(1)], 100.0);
 }
 
 TEST(BranchTracker, ConfirmedSonReplacesTheFatherAndKeepsItsNumber) {
   // GIVEN son 2 of track 1 (as above)
   Script s(branch_profile());
   s.start();
-  s.scan(4, {{400.0, 300.0}});
+  s.scan(4, {{400.0, 150.0}});
   // WHEN the son's next plot falls in its non-manoeuvre gate
-  s.scan(5, {{500.0, 600.0}});
+  s.scan(5, {{500.0, 300.0}});
   // THEN the son is updated, passes confirmation and replaces the father (rules 8, 10;
   // §2.3 (2)): track 1 is now where the son is, the father is gone, no number changes
   EXPECT_EQ(s.events("branch_promoted").size(), 1u);
@@ -142,14 +145,14 @@ TEST(BranchTracker, ConfirmedSonReplacesTheFatherAndKeepsItsNumber) {
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   ASSERT_NE(s.track(1), nullptr);
   EXPECT_EQ(s.track(1)->status, TrackStatus::kConfirmed);
-  EXPECT_NEAR(s.track(1)->position.y(), 600.0, 30.0);
+  EXPECT_NEAR(s.track(1)->position.y(), 300.0, 30.0);
   EXPECT_TRUE(s.associated(2, 501));
   EXPECT_TRUE(s.events("deleted").empty());
   EXPECT_EQ(s.live_branches(), 0);
   EXPECT_FALSE(s.tracker.branch_tree().contains(2));
   EXPECT_EQ(s.tracker.branch_tree().find(1)->type, BranchType::kFather);
   // AND the track goes on along the son's line under number 1
-  s.scan(6, {{600.0, 900.0}});
+  s.scan(6, {{600.0, 450.0}});
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_TRUE(s.associated(1, 601));
 }
@@ -158,8 +161,8 @@ TEST(BranchTracker, FatherNonManoeuvreUpdateDeletesSonsWithoutOne) {
   // GIVEN son 2 of track 1, never updated by a non-manoeuvre pair
   Script s(branch_profile());
   s.start();
-  s.scan(4, {{400.0, 300.0}});
-  // WHEN the father's own next plot arrives (the 300 m plot was a false alarm)
+  s.scan(4, {{400.0, 150.0}});
+  // WHEN the father's own next plot arrives (the 150 m plot was a false alarm)
   s.scan(5, {{500.0, 0.0}});
   // THEN the father is updated and the son deleted (rule 5, §2.3 (1))
   EXPECT_EQ(s.events("branch_pruned"),
@@ -178,19 +181,19 @@ TEST(BranchTracker, SonWithANonManoeuvreUpdateBecomesAnIndependentFather) {
   Script s(profile);
   for (int t = 0; t <= 3; ++t) s.scan(t, {{100.0 * t, 0.0}});
   ASSERT_EQ(s.frame.tracks.at(0).status, TrackStatus::kConfirmed);
-  s.scan(4, {{400.0, 300.0}});  // son 2
-  s.scan(5, {{500.0, 600.0}});  // son 2's non-manoeuvre update: 3 of 4, not confirmed
+  s.scan(4, {{400.0, 150.0}});  // son 2
+  s.scan(5, {{500.0, 300.0}});  // son 2's non-manoeuvre update: 3 of 4, not confirmed
   ASSERT_TRUE(s.events("branch_promoted").empty());
   ASSERT_TRUE(s.tracker.branch_tree().find(2)->non_manoeuvre_updated);
   // WHEN the father takes its own plot again, and the son its own
-  s.scan(6, {{600.0, 0.0}, {600.0, 900.0}});
+  s.scan(6, {{600.0, 0.0}, {600.0, 450.0}});
   // THEN the son leaves the tree as father 2 with its own number (rule 5, §2.3 (1)) and both
   // are reported
   EXPECT_EQ(s.events("initiated").size(), 1u);
   EXPECT_EQ(s.events("initiated")[0].rfind("2: independent son 2 of track 1", 0), 0u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1, 2}));
   EXPECT_NEAR(s.track(1)->position.y(), 0.0, 30.0);
-  EXPECT_NEAR(s.track(2)->position.y(), 900.0, 30.0);
+  EXPECT_NEAR(s.track(2)->position.y(), 450.0, 30.0);
   EXPECT_EQ(s.tracker.branch_tree().find(2)->type, BranchType::kFather);
   EXPECT_EQ(s.live_branches(), 0);
 }
@@ -199,11 +202,11 @@ TEST(BranchTracker, SonManoeuvrePairStartsAGrandsonThatReplacesTheFather) {
   // GIVEN son 2 of track 1
   Script s(branch_profile());
   s.start();
-  s.scan(4, {{400.0, 300.0}});
+  s.scan(4, {{400.0, 150.0}});
   // WHEN the next plot misses the son's non-manoeuvre gate but lies in its manoeuvre gate
-  s.scan(5, {{500.0, 450.0}});
+  s.scan(5, {{500.0, 100.0}});
   // THEN grandson 3 is created from it (rule 7, §2.3 (4)), starting at the son's first plot
-  // (x = 300 at t = 3), so its velocity is (100, 225) m/s
+  // (x = 300 at t = 3), so its velocity is (100, 50) m/s
   EXPECT_EQ(s.events("branch_created"),
             (std::vector<std::string>{"1: grandson 3 of son 2 from plot 501"}));
   const BranchNode* grandson = s.tracker.branch_tree().find(3);
@@ -212,7 +215,7 @@ TEST(BranchTracker, SonManoeuvrePairStartsAGrandsonThatReplacesTheFather) {
   EXPECT_EQ(grandson->parent, 2);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   // WHEN the grandson's next plot falls in its manoeuvre gate
-  s.scan(6, {{600.0, 675.0}});
+  s.scan(6, {{600.0, 150.0}});
   // THEN it is updated (rule 9), confirmed and replaces the father under number 1; the son
   // (no non-manoeuvre update) is deleted (rule 10, §2.3 (3))
   EXPECT_EQ(s.events("branch_promoted").size(), 1u);
@@ -220,7 +223,7 @@ TEST(BranchTracker, SonManoeuvrePairStartsAGrandsonThatReplacesTheFather) {
   EXPECT_EQ(s.events("branch_pruned").size(), 1u);
   EXPECT_EQ(s.events("branch_pruned")[0].rfind("1: son 2 of track 1", 0), 0u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
-  EXPECT_NEAR(s.track(1)->position.y(), 675.0, 30.0);
+  EXPECT_NEAR(s.track(1)->position.y(), 150.0, 30.0);
   EXPECT_EQ(s.live_branches(), 0);
 }
 
@@ -228,11 +231,11 @@ TEST(BranchTracker, GrandsonIsUpdatedThroughItsManoeuvreGate) {
   // GIVEN grandson 3 (as above)
   Script s(branch_profile());
   s.start();
-  s.scan(4, {{400.0, 300.0}});
-  s.scan(5, {{500.0, 450.0}});
+  s.scan(4, {{400.0, 150.0}});
+  s.scan(5, {{500.0, 100.0}});
   ASSERT_TRUE(s.tracker.branch_tree().contains(3));
   // WHEN a plot lies exactly on its prediction
-  s.scan(6, {{600.0, 675.0}});
+  s.scan(6, {{600.0, 150.0}});
   // THEN its association is a manoeuvre one: the grandson was updated (it replaced the
   // father), and no non-manoeuvre rule fired for it (rule 8 prunes only grandsons of an
   // updated son)
@@ -244,16 +247,16 @@ TEST(BranchTracker, TwoPlotsInTheManoeuvreGateStartTwoSonsAndTheLikelierWins) {
   // GIVEN track 1 and two plots in its manoeuvre gate only (paper 003 §4.3)
   Script s(branch_profile());
   s.start();
-  s.scan(4, {{400.0, 300.0}, {400.0, -350.0}});
+  s.scan(4, {{400.0, 150.0}, {400.0, -175.0}});
   EXPECT_EQ(s.events("branch_created").size(), 2u);
   EXPECT_EQ(s.tracker.branch_tree().branch_count(1), 2);
   // WHEN the next plot continues one of them
-  s.scan(5, {{500.0, -700.0}});
+  s.scan(5, {{500.0, -350.0}});
   // THEN that son replaces the father under number 1 and the other son is deleted
   EXPECT_EQ(s.events("branch_promoted").size(), 1u);
   EXPECT_EQ(s.events("branch_pruned").size(), 1u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
-  EXPECT_NEAR(s.track(1)->position.y(), -700.0, 30.0);
+  EXPECT_NEAR(s.track(1)->position.y(), -350.0, 30.0);
   EXPECT_EQ(s.live_branches(), 0);
 }
 
@@ -264,7 +267,7 @@ TEST(BranchTracker, AtTheBranchCapTheLeastLikelyBranchIsPruned) {
   profile.branching.max_branches_per_father = 1;
   Script s(profile);
   s.start();
-  s.scan(4, {{400.0, 150.0}, {400.0, -400.0}});
+  s.scan(4, {{400.0, 150.0}, {400.0, -175.0}});
   // THEN one son is created and the other decision is a pruning at the cap
   EXPECT_EQ(s.events("branch_created"),
             (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
@@ -278,7 +281,7 @@ TEST(BranchTracker, NoRoomLeftUnderMaxChildrenCreatesNoMoreSons) {
   profile.branching.max_children = 1;
   Script s(profile);
   s.start();
-  s.scan(4, {{400.0, 300.0}, {400.0, -350.0}});
+  s.scan(4, {{400.0, 150.0}, {400.0, -175.0}});
   EXPECT_EQ(s.events("branch_created").size(), 1u);
   EXPECT_EQ(s.tracker.branch_tree().branch_count(1), 1);
 }
@@ -286,7 +289,7 @@ TEST(BranchTracker, NoRoomLeftUnderMaxChildrenCreatesNoMoreSons) {
 TEST(BranchTracker, BranchWithoutPlotsIsPrunedByItsTrackLife) {
   Script s(branch_profile());
   s.start();
-  s.scan(4, {{400.0, 300.0}});  // son 2 (tentative, deleted after 2 consecutive misses)
+  s.scan(4, {{400.0, 150.0}});  // son 2 (tentative, deleted after 2 consecutive misses)
   s.scan(5, {});
   EXPECT_TRUE(s.events("branch_pruned").empty());
   s.scan(6, {});
@@ -301,7 +304,7 @@ TEST(BranchTracker, FatherDeletedByItsLifeWaitsUnreportedForItsSon) {
   Script s(profile);
   s.start();
   // WHEN track 1 misses its plot and a plot lies in its manoeuvre gate
-  s.scan(4, {{400.0, 300.0}});
+  s.scan(4, {{400.0, 150.0}});
   // THEN it is suspended (not reported, not deleted) and son 2 starts from the plot
   EXPECT_EQ(s.events("suspended").size(), 1u);
   EXPECT_TRUE(s.events("deleted").empty());
@@ -309,10 +312,10 @@ TEST(BranchTracker, FatherDeletedByItsLifeWaitsUnreportedForItsSon) {
   EXPECT_EQ(s.events("branch_created"),
             (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
   // WHEN the son's next plot arrives, THEN the son replaces it and number 1 is back
-  s.scan(5, {{500.0, 600.0}});
+  s.scan(5, {{500.0, 300.0}});
   EXPECT_EQ(s.events("branch_promoted").size(), 1u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
-  EXPECT_NEAR(s.track(1)->position.y(), 600.0, 30.0);
+  EXPECT_NEAR(s.track(1)->position.y(), 300.0, 30.0);
 }
 
 TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
@@ -341,8 +344,8 @@ TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {
   profile.branching.enabled = false;
   Script s(profile);
   s.start();
-  s.scan(4, {{400.0, 300.0}});
-  s.scan(5, {{500.0, 600.0}});
+  s.scan(4, {{400.0, 150.0}});
+  s.scan(5, {{500.0, 300.0}});
   // THEN no branch exists and no branch event is written
   for (const TrackEvent& e : s.frame.events)
     EXPECT_EQ(e.type.rfind("branch_", 0), std::string::npos);

@@ -154,6 +154,8 @@ class PointTracker {
   void confirm_branch_pairs(ScanReport& report, TrackFrame& frame);
   void update_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame);
   void create_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame);
+  /// A son's start: its father's prediction through the manoeuvre models, updated by `plot`.
+  ImmEstimate son_start(int father, const PlotMeasurement& plot) const;
   /// Frees a place under the caps for a branch of `father` scoring `score`; false if the new
   /// branch itself is the least likely.
   bool make_room(std::int64_t father, std::int64_t parent, double score, std::int64_t plot_id,
