@@ -61,46 +61,36 @@ int run_bench(const BenchOptions& o) {
     fmt::print(stderr, "{}\n", config.error().message);
     return 2;
   }
-  install_stop_handlers();
-  auto session = daemon::DdsSession::open(config->dds);
-  if (!session) {
-    fmt::print(stderr, "skytrack bench-latency: {}\n", session.error().message);
-    return 2;
-  }
   const auto& dds = config->dds;
-  auto plots = session->topic(&skytrack_dds_PlotBatch_desc, dds.topics.plots);
-  auto tracks = session->topic(&skytrack_dds_TrackBatch_desc, dds.topics.tracks);
-  if (!plots || !tracks) {
-    fmt::print(stderr, "skytrack bench-latency: {}\n", (!plots ? plots : tracks).error().message);
+  auto session = open_tool_session(dds, "bench-latency");
+  auto pipe = session ? open_plot_writer_track_reader(*session, dds)
+                      : Expected<PlotWriterTrackReader>(unexpected(session.error()));
+  if (!pipe) {
+    fmt::print(stderr, "{}\n", pipe.error().message);
     return 2;
   }
-  auto writer = session->writer(*plots, daemon::plots_writer_qos(dds).get());
-  auto reader = session->reader(*tracks, daemon::tracks_reader_qos(dds, true).get());
-  if (!writer || !reader) {
-    fmt::print(stderr, "skytrack bench-latency: {}\n", (!writer ? writer : reader).error().message);
-    return 2;
-  }
-  if (!daemon::wait_for_readers(*writer, 1, std::chrono::seconds(30)) ||
-      !daemon::wait_for_writers(*reader, 1, std::chrono::seconds(30))) {
+  const dds_entity_t writer = pipe->writer, reader = pipe->reader;
+  if (!daemon::wait_for_readers(writer, 1, std::chrono::seconds(30)) ||
+      !daemon::wait_for_writers(reader, 1, std::chrono::seconds(30))) {
     fmt::print(stderr, "skytrack bench-latency: no skytrackd on domain {}\n", dds.domain);
     return 3;
   }
   const dds_entity_t waitset = dds_create_waitset(session->participant());
-  dds_waitset_attach(waitset, dds_create_readcondition(*reader, DDS_ANY_STATE), 0);
+  dds_waitset_attach(waitset, dds_create_readcondition(reader, DDS_ANY_STATE), 0);
   // Drain historical (transient-local) samples first.
   std::array<void*, 16> samples{};
   std::array<dds_sample_info_t, 16> infos{};
   const auto drain = [&](std::uint64_t wanted) {
     bool found = false;
     dds_return_t n = 0;
-    while ((n = dds_take(*reader, samples.data(), infos.data(), 16, 16)) > 0) {
+    while ((n = dds_take(reader, samples.data(), infos.data(), 16, 16)) > 0) {
       for (dds_return_t i = 0; i < n; ++i) {
         const auto& b =
             *static_cast<const skytrack_dds_TrackBatch*>(samples[static_cast<std::size_t>(i)]);
         found = found || (infos[static_cast<std::size_t>(i)].valid_data && b.sensor == o.sensor &&
                           b.scan == wanted);
       }
-      dds_return_loan(*reader, samples.data(), n);
+      dds_return_loan(reader, samples.data(), n);
     }
     return found;
   };
@@ -114,7 +104,7 @@ int run_bench(const BenchOptions& o) {
     if (!dds::to_dds(scan, sample)) return 2;
     payload = sample->plot_ids._length * (8 + 4 + 8 * dds::kPlotStride) + 200;
     const auto t0 = Clock::now();
-    if (dds_write(*writer, sample.data()) != DDS_RETCODE_OK) return 2;
+    if (dds_write(writer, sample.data()) != DDS_RETCODE_OK) return 2;
     bool answered = false;
     while (!answered && Clock::now() - t0 < std::chrono::seconds(5)) {
       dds_waitset_wait(waitset, nullptr, 0, DDS_MSECS(100));

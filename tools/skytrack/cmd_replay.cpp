@@ -225,31 +225,21 @@ int run_replay(const ReplayOptions& options) {
     fmt::print(stderr, "{}\n", config.error().message);
     return 2;
   }
-  install_stop_handlers();
-  auto session = daemon::DdsSession::open(config->dds);
-  if (!session) {
-    fmt::print(stderr, "skytrack replay: {}\n", session.error().message);
-    return 2;
-  }
   const auto& dds = config->dds;
-  auto plots = session->topic(&skytrack_dds_PlotBatch_desc, dds.topics.plots);
-  auto tracks = session->topic(&skytrack_dds_TrackBatch_desc, dds.topics.tracks);
-  if (!plots || !tracks) {
-    fmt::print(stderr, "skytrack replay: {}\n", (!plots ? plots : tracks).error().message);
+  auto session = open_tool_session(dds, "replay");
+  auto pipe = session ? open_plot_writer_track_reader(*session, dds)
+                      : Expected<PlotWriterTrackReader>(unexpected(session.error()));
+  if (!pipe) {
+    fmt::print(stderr, "{}\n", pipe.error().message);
     return 2;
   }
-  auto writer = session->writer(*plots, daemon::plots_writer_qos(dds).get());
-  auto reader = session->reader(*tracks, daemon::tracks_reader_qos(dds, true).get());
-  if (!writer || !reader) {
-    fmt::print(stderr, "skytrack replay: {}\n", (!writer ? writer : reader).error().message);
-    return 2;
-  }
+  const dds_entity_t writer = pipe->writer, reader = pipe->reader;
   if (!options.quiet) {
     fmt::print(stderr, "skytrack replay: waiting for a reader of '{}' on domain {}\n",
                dds.topics.plots, dds.domain);
   }
   const auto wait = std::chrono::milliseconds(static_cast<long long>(options.wait * 1000.0));
-  if (!daemon::wait_for_readers(*writer, 1, wait, [] { return !stop_requested(); })) {
+  if (!daemon::wait_for_readers(writer, 1, wait, [] { return !stop_requested(); })) {
     fmt::print(stderr,
                "skytrack replay: no reader of '{}' matched on domain {} within {} s (is skytrackd "
                "running with the same domain, partition and QoS?)\n",
@@ -258,9 +248,9 @@ int run_replay(const ReplayOptions& options) {
   }
   if (options.rate == "max") {
     // Pacing needs the daemon's answers: wait (briefly) for its TrackBatch writer too.
-    daemon::wait_for_writers(*reader, 1, std::chrono::seconds(5), [] { return !stop_requested(); });
+    daemon::wait_for_writers(reader, 1, std::chrono::seconds(5), [] { return !stop_requested(); });
   }
-  Replayer replayer(options, *session, *writer, *reader);
+  Replayer replayer(options, *session, writer, reader);
   return replayer.run();
 }
 

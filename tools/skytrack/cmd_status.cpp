@@ -65,10 +65,9 @@ int run_status(const StatusOptions& options) {
     fmt::print(stderr, "{}\n", config.error().message);
     return 2;
   }
-  install_stop_handlers();
-  auto session = daemon::DdsSession::open(config->dds);
+  auto session = open_tool_session(config->dds, "status");
   if (!session) {
-    fmt::print(stderr, "skytrack status: {}\n", session.error().message);
+    fmt::print(stderr, "{}\n", session.error().message);
     return 2;
   }
   auto topic = session->topic(&skytrack_dds_TrackerStatus_desc, config->dds.topics.status);

@@ -2,6 +2,8 @@
 
 #include <csignal>
 
+#include "skytrack/dds/conversion.hpp"
+
 namespace skytrack::tool {
 namespace {
 
@@ -38,6 +40,27 @@ Expected<dds_entity_t> open_reader(daemon::DdsSession& session,
   auto topic = session.topic(descriptor, name);
   if (!topic) return unexpected(topic.error());
   return session.reader(*topic, qos);
+}
+
+Expected<daemon::DdsSession> open_tool_session(const daemon::DdsSettings& dds,
+                                               const std::string& tool) {
+  install_stop_handlers();
+  auto session = daemon::DdsSession::open(dds);
+  if (!session) return make_error("skytrack " + tool + ": " + session.error().message);
+  return session;
+}
+
+Expected<PlotWriterTrackReader> open_plot_writer_track_reader(daemon::DdsSession& session,
+                                                              const daemon::DdsSettings& dds) {
+  auto plots = session.topic(&skytrack_dds_PlotBatch_desc, dds.topics.plots);
+  if (!plots) return unexpected(plots.error());
+  auto tracks = session.topic(&skytrack_dds_TrackBatch_desc, dds.topics.tracks);
+  if (!tracks) return unexpected(tracks.error());
+  auto writer = session.writer(*plots, daemon::plots_writer_qos(dds).get());
+  if (!writer) return unexpected(writer.error());
+  auto reader = session.reader(*tracks, daemon::tracks_reader_qos(dds, true).get());
+  if (!reader) return unexpected(reader.error());
+  return PlotWriterTrackReader{*writer, *reader};
 }
 
 void install_stop_handlers() {

@@ -26,6 +26,20 @@ void add_dds_options(CLI::App& cmd, DdsToolOptions& options);
 /// The configuration with --domain applied; prints the error and returns nullopt-like failure.
 Expected<daemon::DaemonConfig> resolve_dds_tool_config(const DdsToolOptions& options);
 
+/// Installs the stop handlers and opens the DDS session of `dds`; a failure's message names
+/// the tool ("skytrack <tool>: ...").
+Expected<daemon::DdsSession> open_tool_session(const daemon::DdsSettings& dds,
+                                               const std::string& tool);
+
+/// A PlotBatch writer and a TrackBatch reader (keep-all) with the configured topics and QoS:
+/// what replay and bench-latency publish and listen with.
+struct PlotWriterTrackReader {
+  dds_entity_t writer = 0;
+  dds_entity_t reader = 0;
+};
+Expected<PlotWriterTrackReader> open_plot_writer_track_reader(daemon::DdsSession& session,
+                                                              const daemon::DdsSettings& dds);
+
 /// A reader on topic `name` of type `descriptor`, created in `session`.
 Expected<dds_entity_t> open_reader(daemon::DdsSession& session,
                                    const dds_topic_descriptor_t* descriptor,
