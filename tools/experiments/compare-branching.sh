@@ -10,7 +10,8 @@
 # repository root).
 #
 # Usage: tools/experiments/compare-branching.sh [--seeds N] [--first-seed S] [--jobs J]
-#            [--out DIR]
+#            [--profile P] [--out DIR]
+#   --profile P     the branching-on profile (default: the built-in default profile)
 #   --seeds N       seeds per scenario (default 100): S, S+1, ..., S+N-1
 #   --first-seed S  first seed (default 1)
 #   --jobs J        runs at once (default 2)
@@ -42,6 +43,7 @@ while [[ $# -gt 0 ]]; do
     --first-seed) first_seed=$2; shift 2 ;;
     --jobs) jobs=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
+    --profile) on_profile=$2; shift 2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "compare-branching: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
@@ -53,6 +55,8 @@ done
 
 scenarios=(paper003_exp1_racetrack_figure_eight paper003_exp2_missed_in_clutter paper003_exp3_uturn)
 off_profile="$root/config/profiles/no_branching.yaml"
+on_profile=${on_profile:-}
+[[ -z "$on_profile" ]] || "$skytrack" check-profile "$on_profile" >/dev/null
 "$skytrack" check-profile "$off_profile" >/dev/null
 mkdir -p "$out"
 
@@ -62,8 +66,8 @@ one_run() {
   local base="$out/$scen.$seed"
   "$skytrack" simulate --scenario "$root/config/scenarios/$scen.yaml" --plots "$base.plots.jsonl" \
     --truth "$base.truth.jsonl" --seed "$seed" >/dev/null 2>"$base.simulate.log"
-  "$skytrack" track --plots "$base.plots.jsonl" --out "$base.on.tracks.jsonl" --quiet \
-    2>"$base.on.track.log"
+  "$skytrack" track ${on_profile:+--profile "$on_profile"} --plots "$base.plots.jsonl" \
+    --out "$base.on.tracks.jsonl" --quiet 2>"$base.on.track.log"
   "$skytrack" track --profile "$off_profile" --plots "$base.plots.jsonl" \
     --out "$base.off.tracks.jsonl" --quiet 2>"$base.off.track.log"
   for mode in on off; do
@@ -72,7 +76,7 @@ one_run() {
   done
 }
 export -f one_run
-export skytrack root out off_profile
+export skytrack root out off_profile on_profile
 
 for scen in "${scenarios[@]}"; do
   for ((s = first_seed; s < first_seed + seeds; ++s)); do echo "$scen $s"; done
