@@ -150,12 +150,12 @@ ImmEstimate ImmFilter::predict(const ImmEstimate& posterior, double time) const 
   out.modes.resize(models_.size());
   const double dt = time - posterior.time;
   // The Markov matrix over dt (transition_over); within one interval, the common case, its
-  // entries come straight from P without forming a matrix.
+  // entries come straight from P without forming a matrix. Without an interval steps is 1.
   const double steps = transition_interval_ > 0.0 ? std::max(dt, 0.0) / transition_interval_ : 1.0;
   Eigen::MatrixXd long_transition;
-  if (steps > 1.0 && transition_interval_ > 0.0) long_transition = transition_over(dt);
+  if (steps > 1.0) long_transition = transition_over(dt);
   const auto transition = [&](Eigen::Index i, Eigen::Index j) {
-    if (steps > 1.0 && transition_interval_ > 0.0) return long_transition(i, j);
+    if (steps > 1.0) return long_transition(i, j);
     if (steps == 1.0) return transition_(i, j);
     return (i == j ? 1.0 - steps : 0.0) + steps * transition_(i, j);
   };
