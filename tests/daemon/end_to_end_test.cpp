@@ -61,6 +61,15 @@ class EndToEnd : public ::testing::Test {
   }
 
   /// Simulates the shipped default scenario and tracks it offline with the default profile.
+  /// Replays plots.jsonl over DDS at max rate; the replay must succeed.
+  void replay_at_max_rate(const std::string& config) {
+    ASSERT_EQ(run({kTool, "replay", "--config", config, "--plots", path("plots.jsonl"), "--rate",
+                   "max", "--quiet"},
+                  path("replay.log"), 60s),
+              0)
+        << read_file(path("replay.log"));
+  }
+
   void simulate_and_track_offline() {
     ASSERT_EQ(run({kTool, "simulate", "--scenario", kSource + "/config/scenarios/default.yaml",
                    "--plots", path("plots.jsonl"), "--truth", path("truth.jsonl")},
@@ -146,11 +155,7 @@ TEST_F(EndToEnd, ReplayAtMaxRateRecordsTheOfflineTracks) {
   ASSERT_TRUE(record.wait_for_log("matched a TrackBatch writer", 10s)) << record.log();
 
   // WHEN the scenario is replayed over DDS at max rate and recorded
-  ASSERT_EQ(run({kTool, "replay", "--config", config, "--plots", path("plots.jsonl"), "--rate",
-                 "max", "--quiet"},
-                path("replay.log"), 60s),
-            0)
-      << read_file(path("replay.log"));
+  ASSERT_NO_FATAL_FAILURE(replay_at_max_rate(config));
   ASSERT_EQ(record.wait(30s), 0) << record.log();
   // AND a display that joins late (transient-local tracks) ...
   ASSERT_EQ(run({kTool, "record", "--config", config, "--tracks", path("late.tracks.jsonl"),
@@ -208,11 +213,7 @@ TEST_F(EndToEnd, TwoSensorsOnOnePlotTopicGiveTheOfflineTracks) {
                path("record.log"));
   ASSERT_TRUE(record.wait_for_log("matched a TrackBatch writer", 10s)) << record.log();
   // WHEN it is replayed at max rate
-  ASSERT_EQ(run({kTool, "replay", "--config", config, "--plots", path("plots.jsonl"), "--rate",
-                 "max", "--quiet"},
-                path("replay.log"), 60s),
-            0)
-      << read_file(path("replay.log"));
+  ASSERT_NO_FATAL_FAILURE(replay_at_max_rate(config));
   ASSERT_EQ(record.wait(30s), 0) << record.log();
   daemon.signal(SIGTERM);
   ASSERT_EQ(daemon.wait(5s), 0) << daemon.log();

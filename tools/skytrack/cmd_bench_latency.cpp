@@ -56,26 +56,20 @@ PlotScan make_scan(int targets, int k, std::uint32_t sensor, std::mt19937_64& rn
 }
 
 int run_bench(const BenchOptions& o) {
-  auto config = resolve_dds_tool_config(o.dds);
-  if (!config) {
-    fmt::print(stderr, "{}\n", config.error().message);
-    return 2;
-  }
-  const auto& dds = config->dds;
-  auto session = open_tool_session(dds, "bench-latency");
-  auto pipe = session ? open_plot_writer_track_reader(*session, dds)
-                      : Expected<PlotWriterTrackReader>(unexpected(session.error()));
+  auto pipe = open_plot_pipe(o.dds, "bench-latency");
   if (!pipe) {
     fmt::print(stderr, "{}\n", pipe.error().message);
     return 2;
   }
+  const auto& dds = pipe->config.dds;
+  daemon::DdsSession& session = pipe->session;
   const dds_entity_t writer = pipe->writer, reader = pipe->reader;
   if (!daemon::wait_for_readers(writer, 1, std::chrono::seconds(30)) ||
       !daemon::wait_for_writers(reader, 1, std::chrono::seconds(30))) {
     fmt::print(stderr, "skytrack bench-latency: no skytrackd on domain {}\n", dds.domain);
     return 3;
   }
-  const dds_entity_t waitset = dds_create_waitset(session->participant());
+  const dds_entity_t waitset = dds_create_waitset(session.participant());
   dds_waitset_attach(waitset, dds_create_readcondition(reader, DDS_ANY_STATE), 0);
   // Drain historical (transient-local) samples first.
   std::array<void*, 16> samples{};

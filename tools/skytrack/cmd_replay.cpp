@@ -220,19 +220,13 @@ int Replayer::run() {
 }
 
 int run_replay(const ReplayOptions& options) {
-  auto config = resolve_dds_tool_config(options.dds);
-  if (!config) {
-    fmt::print(stderr, "{}\n", config.error().message);
-    return 2;
-  }
-  const auto& dds = config->dds;
-  auto session = open_tool_session(dds, "replay");
-  auto pipe = session ? open_plot_writer_track_reader(*session, dds)
-                      : Expected<PlotWriterTrackReader>(unexpected(session.error()));
+  auto pipe = open_plot_pipe(options.dds, "replay");
   if (!pipe) {
     fmt::print(stderr, "{}\n", pipe.error().message);
     return 2;
   }
+  const auto& dds = pipe->config.dds;
+  daemon::DdsSession& session = pipe->session;
   const dds_entity_t writer = pipe->writer, reader = pipe->reader;
   if (!options.quiet) {
     fmt::print(stderr, "skytrack replay: waiting for a reader of '{}' on domain {}\n",
@@ -250,7 +244,7 @@ int run_replay(const ReplayOptions& options) {
     // Pacing needs the daemon's answers: wait (briefly) for its TrackBatch writer too.
     daemon::wait_for_writers(reader, 1, std::chrono::seconds(5), [] { return !stop_requested(); });
   }
-  Replayer replayer(options, *session, writer, reader);
+  Replayer replayer(options, session, writer, reader);
   return replayer.run();
 }
 

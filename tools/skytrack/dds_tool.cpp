@@ -50,17 +50,24 @@ Expected<daemon::DdsSession> open_tool_session(const daemon::DdsSettings& dds,
   return session;
 }
 
-Expected<PlotWriterTrackReader> open_plot_writer_track_reader(daemon::DdsSession& session,
-                                                              const daemon::DdsSettings& dds) {
-  auto plots = session.topic(&skytrack_dds_PlotBatch_desc, dds.topics.plots);
-  if (!plots) return unexpected(plots.error());
-  auto tracks = session.topic(&skytrack_dds_TrackBatch_desc, dds.topics.tracks);
-  if (!tracks) return unexpected(tracks.error());
-  auto writer = session.writer(*plots, daemon::plots_writer_qos(dds).get());
-  if (!writer) return unexpected(writer.error());
-  auto reader = session.reader(*tracks, daemon::tracks_reader_qos(dds, true).get());
-  if (!reader) return unexpected(reader.error());
-  return PlotWriterTrackReader{*writer, *reader};
+Expected<PlotPipe> open_plot_pipe(const DdsToolOptions& options, const std::string& tool) {
+  auto config = resolve_dds_tool_config(options);
+  if (!config) return unexpected(config.error());
+  const daemon::DdsSettings& dds = config->dds;
+  auto session = open_tool_session(dds, tool);
+  if (!session) return unexpected(session.error());
+  const auto failed = [&](const Error& e) {
+    return make_error("skytrack " + tool + ": " + e.message);
+  };
+  auto plots = session->topic(&skytrack_dds_PlotBatch_desc, dds.topics.plots);
+  if (!plots) return failed(plots.error());
+  auto tracks = session->topic(&skytrack_dds_TrackBatch_desc, dds.topics.tracks);
+  if (!tracks) return failed(tracks.error());
+  auto writer = session->writer(*plots, daemon::plots_writer_qos(dds).get());
+  if (!writer) return failed(writer.error());
+  auto reader = session->reader(*tracks, daemon::tracks_reader_qos(dds, true).get());
+  if (!reader) return failed(reader.error());
+  return PlotPipe{std::move(*config), std::move(*session), *writer, *reader};
 }
 
 void install_stop_handlers() {

@@ -31,14 +31,16 @@ Expected<daemon::DaemonConfig> resolve_dds_tool_config(const DdsToolOptions& opt
 Expected<daemon::DdsSession> open_tool_session(const daemon::DdsSettings& dds,
                                                const std::string& tool);
 
-/// A PlotBatch writer and a TrackBatch reader (keep-all) with the configured topics and QoS:
-/// what replay and bench-latency publish and listen with.
-struct PlotWriterTrackReader {
+/// What replay and bench-latency publish and listen with: the resolved configuration, its
+/// session, a PlotBatch writer and a TrackBatch reader (keep-all) with the configured topics
+/// and QoS. A failure's message names the tool.
+struct PlotPipe {
+  daemon::DaemonConfig config;
+  daemon::DdsSession session;
   dds_entity_t writer = 0;
   dds_entity_t reader = 0;
 };
-Expected<PlotWriterTrackReader> open_plot_writer_track_reader(daemon::DdsSession& session,
-                                                              const daemon::DdsSettings& dds);
+Expected<PlotPipe> open_plot_pipe(const DdsToolOptions& options, const std::string& tool);
 
 /// A reader on topic `name` of type `descriptor`, created in `session`.
 Expected<dds_entity_t> open_reader(daemon::DdsSession& session,
