@@ -176,6 +176,12 @@ AssociationSpec read_association(YamlSection s) {
   s.number("gate_probability", a.gate_probability, kOpenUnit);
   s.number("detection_probability", a.detection_probability, Range::open_probability());
   read_clutter_density(s, a.clutter_density);
+  YamlSection map = s.section("clutter_map");
+  map.boolean("enabled", a.clutter_map.enabled);
+  map.number("range_cell", a.clutter_map.range_cell, Range::positive());
+  map.number("azimuth_cell", a.clutter_map.azimuth_cell, Range::positive());
+  map.number("cartesian_cell", a.clutter_map.cartesian_cell, Range::positive());
+  map.finish();
   s.integer("max_exact_cluster_size", a.max_exact_cluster_size, kAtLeastOne);
   s.integer("k_best", a.k_best, kAtLeastOne);
   s.finish();

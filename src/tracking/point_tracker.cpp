@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "point_tracker_support.hpp"
+#include "skytrack/clutter/clutter_map.hpp"
 #include "skytrack/core/chi_square.hpp"
 #include "skytrack/geometry/frames.hpp"
 
@@ -15,6 +16,7 @@ namespace skytrack {
 namespace {
 
 using tracking_detail::add_event;
+using tracking_detail::mode_spread;
 using tracking_detail::position_of;
 using tracking_detail::position_spread;
 using tracking_detail::velocity_of;
@@ -213,21 +215,26 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   half_span_ = half_span;
   predicted_.resize(tracks_.size());
   covered_.assign(tracks_.size(), 1);
+  suspended_at_gate_.clear();
   const double widest = gate_threshold_[kMaxMeasurementDim];
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
     const ImmEstimate& estimate = tracks_[t].estimate;
-    // Grandsons and doomed fathers take manoeuvre pairs only; manoeuvre gates are made
-    // later, for the tracks that can use them (point_tracker_branches.cpp).
-    const bool non_manoeuvre = tracks_[t].branch != BranchType::kGrandson && !tracks_[t].doomed;
     const Gaussian mid =
         filter_.combine(filter_.predict(estimate, std::max(batch_mid, estimate.time)));
     const Eigen::Vector3d centre = position_of(mid.mean, layout_.dims);
-    // Search radius: the widest gate in the most uncertain direction, plus the motion over
-    // half the batch's time span. The exact gate test is per plot, in measurement space.
-    const double radius = search_radius(mid, centre, widest, scan);
     // A sector batch looks at a track whose predicted position lies in the sector; one whose
     // search region only reaches into it may take a plot from it but is not aged by it.
     covered_[t] = covers(scan, centre) ? 1 : 0;
+    if (covered_[t] != 0 && suspends_before_gating(tracks_[t], mid)) {
+      tracks_[t].doomed = batches_;
+      suspended_at_gate_.push_back(static_cast<int>(t));
+    }
+    // Grandsons and doomed fathers take manoeuvre pairs only; manoeuvre gates are made
+    // later, for the tracks that can use them (point_tracker_branches.cpp).
+    const bool non_manoeuvre = tracks_[t].branch != BranchType::kGrandson && !tracks_[t].doomed;
+    // Search radius: the widest gate in the most uncertain direction, plus the motion over
+    // half the batch's time span. The exact gate test is per plot, in measurement space.
+    const double radius = search_radius(mid, centre, widest, scan);
     if (!covered_[t] && !covers_region(scan, centre, radius)) {
       predicted_[t] = estimate;
       continue;
@@ -407,7 +414,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   track.quality = 0.8 * track.quality + 0.2 * detection;
   update_existence(track.life, likelihood_ratio, pd, profile_.association.gate_probability,
                    profile_.track_life);
-  const double spread = position_spread(filter_.combine(track.estimate), layout_.dims);
+  const double spread = mode_spread(track.estimate, layout_.dims);
   const LifeChange change = advance_life(track.life, detection > 0.5, spread, profile_.track_life);
   if (change.confirmed) add_event(frame, "confirmed", track.id, "");
   if (change.started_coasting) add_event(frame, "coasting", track.id, "");
@@ -641,6 +648,18 @@ void PointTracker::estimate_clutter_density() {
     for (int i = 0; i < f.size; ++i) volume *= std::max(f.high[i] - f.low[i], 1e-6);
     auto_density_[j] = std::max(f.count, 1) / volume;
   }
+  if (!profile_.association.clutter_map.enabled) return;
+  // The clutter map counts the plots no firm track gates: those are the false plots.
+  clutter_counted_.assign(plots_.size(), 0);
+  for (std::size_t j = 0; j < plots_.size(); ++j) clutter_counted_[j] = rejected_[j] ? 0 : 1;
+  for (const Candidate& c : candidates_) {
+    if (is_reported_as_firm(tracks_[c.track].life.status)) clutter_counted_[c.plot] = 0;
+  }
+  const config::ClutterMapSpec& map = profile_.association.clutter_map;
+  clutter::raise_to_local_density(
+      plots_, clutter_counted_,
+      {.range = map.range_cell, .azimuth = map.azimuth_cell, .cartesian = map.cartesian_cell},
+      auto_density_);
 }
 
 }  // namespace skytrack

@@ -29,6 +29,7 @@ namespace skytrack {
 namespace {
 
 using tracking_detail::add_event;
+using tracking_detail::mode_spread;
 using tracking_detail::position_of;
 using tracking_detail::position_spread;
 
@@ -74,6 +75,12 @@ bool PointTracker::may_start_sons(const PointTrack& father) const {
           father.life.consecutive_misses < profile_.track_life.delete_confirmed_misses);
 }
 
+bool PointTracker::suspends_before_gating(const PointTrack& track, const Gaussian& mid) const {
+  return branching() && track.branch == BranchType::kFather && !track.doomed &&
+         is_reported_as_firm(track.life.status) && tree_.branch_count(track.id) > 0 &&
+         position_spread(mid, layout_.dims) > profile_.track_life.delete_position_sigma;
+}
+
 ImmEstimate PointTracker::manoeuvre_prediction(const ImmEstimate& estimate, double time) const {
   const ImmEstimate start =
       manoeuvre_->initial(filter_.combine(estimate), manoeuvre_start_, estimate.time);
@@ -90,6 +97,11 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   branch_updates_.assign(tracks_.size(), SoftUpdate{});
   branch_pairs_.clear();
   touched_.assign(tracks_.size(), 0);
+  for (const int t : suspended_at_gate_) {
+    add_event(frame, "suspended", tracks_[t].id,
+              "predicted position spread above delete_position_sigma; kept unreported while a "
+              "branch may replace it");
+  }
   // §2.1 (1), (3): the non-manoeuvre kinds; the fathers' kind also updates the fathers.
   solve_kind(PairKind::kFatherNonManoeuvre, report, frame);
   solve_kind(PairKind::kSonNonManoeuvre, report, frame);
@@ -252,11 +264,13 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   touched_[static_cast<std::size_t>(t)] = 1;
   used_by_branch_[pair.plot] = 1;
   const std::string plot = std::to_string(plots_[pair.plot].plot_id);
-  const double spread = position_spread(filter_.combine(branch.estimate), layout_.dims);
+  const double spread = mode_spread(branch.estimate, layout_.dims);
   if (branch.branch == BranchType::kFather) {  // made independent earlier in this batch
     update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
                      profile_.association.gate_probability, profile_.track_life);
-    const LifeChange change = advance_life(branch.life, true, spread, profile_.track_life);
+    const LifeChange change = advance_life(
+        branch.life, true, position_spread(filter_.combine(branch.estimate), layout_.dims),
+        profile_.track_life);
     if (change.confirmed) add_event(frame, "confirmed", number, "");
     return;
   }
@@ -390,7 +404,7 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
     }
     branch.estimate = filter_.predict(branch.estimate, std::max(frame.time, branch.estimate.time));
     branch.score += miss;
-    const double spread = position_spread(filter_.combine(branch.estimate), layout_.dims);
+    const double spread = mode_spread(branch.estimate, layout_.dims);
     if (advance_life(branch.life, false, spread, branch_life_).deleted) {
       changes_.clear();
       tree_.remove(branch.id, changes_);

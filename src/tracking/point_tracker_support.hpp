@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "skytrack/core/track_report.hpp"
+#include "skytrack/filter/imm_filter.hpp"
 #include "skytrack/filter/state.hpp"
 
 namespace skytrack::tracking_detail {
@@ -23,6 +24,18 @@ inline double position_spread(const Gaussian& g, int dims) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(pos, Eigen::EigenvaluesOnly);  // closed form: called per track per batch
   return std::sqrt(std::max(0.0, eig.eigenvalues().maxCoeff()));
+}
+
+/// The mode-weighted spread sqrt(sum_j mu_j spread_j^2) of an IMM estimate's own modes:
+/// the size of its gates (a union of per-mode gates), without the spread between the modes'
+/// means, which grows by kilometres when turn modes coast but does not widen any mode's gate.
+inline double mode_spread(const ImmEstimate& estimate, int dims) {
+  double sum = 0.0;
+  for (std::size_t j = 0; j < estimate.modes.size(); ++j) {
+    const double s = position_spread(estimate.modes[j], dims);
+    sum += estimate.probabilities[static_cast<Eigen::Index>(j)] * s * s;
+  }
+  return std::sqrt(sum);
 }
 
 inline Eigen::Vector3d position_of(const StateVec& x, int dims) {

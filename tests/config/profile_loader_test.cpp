@@ -65,7 +65,10 @@ mode_transition: [[0.6, 0.1, 0.1, 0.1, 0.1], [0.1, 0.6, 0.1, 0.1, 0.1],
                   [0.1, 0.1, 0.6, 0.1, 0.1], [0.1, 0.1, 0.1, 0.6, 0.1],
                   [0.1, 0.1, 0.1, 0.1, 0.6]]
 initial_mode_probabilities: [0.2, 0.2, 0.2, 0.2, 0.2]
-association: {method: gnn, clutter_density: 1e-8}
+association:
+  method: gnn
+  clutter_density: 1e-8
+  clutter_map: {enabled: true, range_cell: 2000, azimuth_cell: 0.02, cartesian_cell: 3000}
 branching: {enabled: false, manoeuvre_models: [right, singer]}
 )"),
                                      "p.yaml");
@@ -87,6 +90,10 @@ branching: {enabled: false, manoeuvre_models: [right, singer]}
   EXPECT_EQ(m[4].time_constant, 10.0);
   EXPECT_EQ(profile->association.method, AssociationMethod::kGnn);
   EXPECT_EQ(profile->association.clutter_density, 1e-8);
+  EXPECT_TRUE(profile->association.clutter_map.enabled);
+  EXPECT_EQ(profile->association.clutter_map.range_cell, 2000.0);
+  EXPECT_EQ(profile->association.clutter_map.azimuth_cell, 0.02);
+  EXPECT_EQ(profile->association.clutter_map.cartesian_cell, 3000.0);
   EXPECT_THAT(profile->branching.manoeuvre_models, ElementsAre("right", "singer"));
 }
 
@@ -102,8 +109,13 @@ TEST(ProfileLoader, AcceptsEveryModeName) {
 TEST(ProfileLoader, UnknownKeyNamesThePathAndLine) {
   EXPECT_EQ(error_of("association:\n  method: jpda\n  gate_prob: 0.9\n"),
             "p.yaml:5: association.gate_prob: unknown key (known keys here: method, "
-            "gate_probability, detection_probability, clutter_density, max_exact_cluster_size, "
-            "k_best)");
+            "gate_probability, detection_probability, clutter_density, clutter_map, "
+            "max_exact_cluster_size, k_best)");
+}
+
+TEST(ProfileLoader, ClutterMapCellsArePositive) {
+  EXPECT_EQ(error_of("association:\n  clutter_map: {enabled: true, azimuth_cell: 0}\n"),
+            "p.yaml:4: association.clutter_map.azimuth_cell: expected a number > 0, got 0");
 }
 
 TEST(ProfileLoader, KeyOfAnotherModelTypeIsUnknown) {

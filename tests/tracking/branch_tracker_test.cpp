@@ -318,6 +318,29 @@ TEST(BranchTracker, FatherDeletedByItsLifeWaitsUnreportedForItsSon) {
   EXPECT_NEAR(s.track(1)->position.y(), 300.0, 30.0);
 }
 
+TEST(BranchTracker, FatherTooUncertainToGateYieldsToItsSon) {
+  // GIVEN a position-spread limit above track 1's spread after one missed scan but below its
+  // prediction over two, and son 2 started in the scan it missed
+  config::TrackingProfile profile = branch_profile();
+  profile.track_life.delete_position_sigma = 14.5;
+  Script s(profile);
+  s.start();
+  s.scan(4, {{400.0, 150.0}});
+  ASSERT_EQ(s.events("branch_created"),
+            (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
+  ASSERT_TRUE(s.events("suspended").empty());
+  // WHEN the next scan has a plot on the father's straight line and one on the son's
+  s.scan(5, {{500.0, 0.0}, {500.0, 300.0}});
+  // THEN the father, too uncertain to gate, is suspended before it can take the plot and cut
+  // its son (rule 5); the son takes its plot, is confirmed and keeps number 1 (rule 10)
+  EXPECT_EQ(s.events("suspended").size(), 1u);
+  EXPECT_FALSE(s.associated(1, 501));
+  EXPECT_TRUE(s.associated(2, 502));
+  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_NEAR(s.track(1)->position.y(), 300.0, 30.0);
+}
+
 TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
   config::TrackingProfile profile = branch_profile();
   profile.track_life.delete_position_sigma = 12.0;

@@ -20,7 +20,8 @@
 # Columns, per target and run (mean over the seeds), from the scan its first firm
 # (confirmed or coasting) track is within 2000 m of it (the track "on" it is the nearest):
 #   number changes   the number on the target changes (a re-initiation is one of them: the
-#                    new number is a new track); "without number change" = % of targets
+#                    new number is a new track); "without number change" = % of targets,
+#                    and % of runs in which no target's number changed
 #   scans lost       scans with no firm track on the target (coasting far off, or none)
 #   eval id changes / fragmentations   `skytrack eval` over the whole run (start-up included)
 #   number survives  exp. 2: the number on the target at t = 100 s (just before its 3
@@ -134,7 +135,7 @@ def mean(xs):
 rows = []
 for scen in scenarios:
     for mode in ("on", "off"):
-        ids, frags, changes, gaps, clean, survive, won = [], [], [], [], [], [], []
+        ids, frags, changes, gaps, clean, runs_clean, survive, won = [], [], [], [], [], [], [], []
         for seed in seeds:
             base = f"{out}/{scen}.{seed}"
             score = json.load(open(f"{base}.{mode}.eval.json"))
@@ -144,11 +145,14 @@ for scen in scenarios:
             truth = lines(base + ".truth.jsonl")
             tracks = lines(f"{base}.{mode}.tracks.jsonl")
             targets = sorted({o["id"] for f in truth for o in f["objects"]})
+            run_changes = 0
             for target in targets:
                 numbers, n_changes, n_gaps = continuity(truth, tracks, target)
                 changes.append(n_changes)
                 gaps.append(n_gaps)
                 clean.append(n_changes == 0)
+                run_changes += n_changes
+            runs_clean.append(run_changes == 0)
             if "exp2" in scen:  # before the 3 misses and after the re-detection at 137.5 s
                 a, b = numbers[at(truth, 100.0)], numbers[at(truth, 150.0)]
                 survive.append(a is not None and a == b)
@@ -158,17 +162,18 @@ for scen in scenarios:
                 won.append(any(e["type"] == "branch_promoted" and e["track"] == a
                                and 100.0 <= f["time"] <= 150.0
                                for f in tracks for e in f["events"]))
-        rows.append((scen, mode, mean(changes), mean(gaps), pct(clean), mean(ids), mean(frags),
+        rows.append((scen, mode, mean(changes), mean(gaps), pct(clean), pct(runs_clean),
+                     mean(ids), mean(frags),
                      pct(survive) if survive else None, pct(won) if won else None))
 
 print(f"Seeds {first}-{first + count - 1}: {count} runs per scenario and tracker. Per target, "
       f"from its first firm track on (within {GATE:.0f} m):\n")
 print("| scenario | branching | number changes / target | scans lost / target | "
-      "targets without number change % | eval id changes / target | eval fragmentations / "
-      "target | number survives % | branch won % |")
-print("|---|---|---|---|---|---|---|---|---|")
-for scen, mode, ch, gp, cl, ids, fr, sv, wn in rows:
+      "targets without number change % | runs without number change % | eval id changes / "
+      "target | eval fragmentations / target | number survives % | branch won % |")
+print("|---|---|---|---|---|---|---|---|---|---|")
+for scen, mode, ch, gp, cl, rc, ids, fr, sv, wn in rows:
     cell = lambda v: "—" if v is None else f"{v:.0f}"
-    print(f"| {scen} | {mode} | {ch:.2f} | {gp:.2f} | {cl:.0f} | {ids:.2f} | {fr:.2f} | "
+    print(f"| {scen} | {mode} | {ch:.2f} | {gp:.2f} | {cl:.0f} | {rc:.0f} | {ids:.2f} | {fr:.2f} | "
           f"{cell(sv)} | {cell(wn)} |")
 PY

@@ -72,6 +72,15 @@ struct MotionModelSpec {
   bool operator==(const MotionModelSpec&) const = default;
 };
 
+/// Local clutter density (a clutter map) on top of the batch-wide `auto` estimate.
+struct ClutterMapSpec {
+  bool enabled = false;
+  double range_cell = 5000.0;      // [m] polar plots
+  double azimuth_cell = 0.05;      // [rad] polar plots
+  double cartesian_cell = 5000.0;  // [m] x and y of Cartesian plots
+  bool operator==(const ClutterMapSpec&) const = default;
+};
+
 struct AssociationSpec {
   AssociationMethod method = AssociationMethod::kJpda;
   double gate_probability = 0.999;     // P_G of the (non-manoeuvre) validation gate, in (0, 1)
@@ -79,6 +88,7 @@ struct AssociationSpec {
   // Clutter spatial density in the tracking frame [1/m^2 in 2-D, 1/m^3 in 3-D]; empty means
   // "auto": estimated from each scan.
   std::optional<double> clutter_density;
+  ClutterMapSpec clutter_map;       // with auto only
   int max_exact_cluster_size = 32;  // [tracks] exact JPDA marginals up to this cluster size
   int k_best = 100;                 // joint events from Murty's k-best above it
   bool operator==(const AssociationSpec&) const = default;

@@ -149,6 +149,10 @@ class PointTracker {
   void solve_kind(PairKind kind, ScanReport& report, TrackFrame& frame);
   /// update_track for a father; a firm father its life deletes becomes doomed instead.
   bool may_start_sons(const PointTrack& father) const;
+  /// A firm, not yet doomed father whose prediction `mid` is already wider than
+  /// delete_position_sigma: its non-manoeuvre gate would take clutter and cut the branch
+  /// that follows the target, so it is suspended before gating.
+  bool suspends_before_gating(const PointTrack& track, const Gaussian& mid) const;
   void update_father(int t, std::span<const int> candidates, std::span<const double> beta_plots,
                      double beta_miss, TrackFrame& frame);
   void confirm_branch_pairs(ScanReport& report, TrackFrame& frame);
@@ -199,6 +203,7 @@ class PointTracker {
   std::vector<std::uint8_t> rejected_;
   std::vector<std::uint8_t> gated_;
   std::vector<std::uint8_t> covered_;            // per track: inside this batch's coverage
+  std::vector<int> suspended_at_gate_;           // fathers suspended on their prediction
   std::vector<ImmEstimate> predicted_;           // per track, at its update time
   std::vector<Candidate> candidates_;            // non-manoeuvre gates
   std::vector<Candidate> manoeuvre_candidates_;  // manoeuvre gates (branching)
@@ -218,7 +223,8 @@ class PointTracker {
   std::vector<GatedPair> pairs_;
   std::vector<PlotHypothesis> hypotheses_;  // one track's update
   std::vector<double> kept_beta_;
-  std::vector<double> auto_density_;  // per plot, measurement space
+  std::vector<double> auto_density_;           // per plot, measurement space
+  std::vector<std::uint8_t> clutter_counted_;  // per plot: counted by the clutter map
   PlotIndex index_;
 };
 

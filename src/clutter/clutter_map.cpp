@@ -1,0 +1,137 @@
+#include "skytrack/clutter/clutter_map.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+
+namespace skytrack::clutter {
+namespace {
+
+constexpr int kExtra = kMaxMeasurementDim - 2;  // components after the mapped two
+constexpr int kMinForSpread = 5;                // plots needed to trust a block's spread
+
+struct Cell {
+  std::int64_t a = 0, b = 0;
+};
+
+struct Sums {  // of the counted plots in one cell
+  int count = 0;
+  std::array<double, kExtra> sum{}, square{};
+
+  void add(const PlotMeasurement& p, int sign) {
+    count += sign;
+    for (int i = 2; i < p.z.size(); ++i) {
+      sum[i - 2] += sign * p.z[i];
+      square[i - 2] += sign * p.z[i] * p.z[i];
+    }
+  }
+  void add(const Sums& o) {
+    count += o.count;
+    for (int i = 0; i < kExtra; ++i) {
+      sum[i] += o.sum[i];
+      square[i] += o.square[i];
+    }
+  }
+};
+
+// Cells of one measurement form; the azimuth axis wraps round.
+struct Grid {
+  double size_a = 1.0, size_b = 1.0;
+  std::int64_t wrap_b = 0;  // number of azimuth cells, 0 for Cartesian
+
+  Grid(const PlotMeasurement& p, const ClutterMapCells& cells) {
+    if (p.model.kind == MeasurementKind::kPolar) {
+      size_a = cells.range;
+      wrap_b = std::max<std::int64_t>(
+          3, static_cast<std::int64_t>(std::ceil(2.0 * std::numbers::pi / cells.azimuth)));
+      size_b = 2.0 * std::numbers::pi / static_cast<double>(wrap_b);
+    } else {
+      size_a = size_b = cells.cartesian;
+    }
+  }
+  Cell cell_of(const PlotMeasurement& p) const {
+    const double b = wrap_b > 0 ? p.z[1] + std::numbers::pi : p.z[1];
+    return {static_cast<std::int64_t>(std::floor(p.z[0] / size_a)),
+            wrapped(static_cast<std::int64_t>(std::floor(b / size_b)))};
+  }
+  std::int64_t wrapped(std::int64_t b) const {
+    return wrap_b > 0 ? ((b % wrap_b) + wrap_b) % wrap_b : b;
+  }
+  // Area of the 3 x 3 block round cell c; a polar block is clipped at zero range.
+  double block_area(Cell c, bool polar) const {
+    const double low = polar ? std::max(0.0, (c.a - 1) * size_a) : (c.a - 1) * size_a;
+    return ((c.a + 2) * size_a - low) * 3.0 * size_b;
+  }
+};
+
+int form_of(const PlotMeasurement& p) {
+  return static_cast<int>(p.model.kind) * 8 + static_cast<int>(p.z.size());
+}
+
+std::uint64_t key(int form, Cell c) {
+  // Form in the top byte; 28 bits per cell index (range cells of a few km: ample).
+  const auto a = static_cast<std::uint64_t>(c.a + (1 << 27)) & 0xFFFFFFF;
+  const auto b = static_cast<std::uint64_t>(c.b + (1 << 27)) & 0xFFFFFFF;
+  return (static_cast<std::uint64_t>(form) << 56) | (a << 28) | b;
+}
+
+}  // namespace
+
+void raise_to_local_density(std::span<const PlotMeasurement> plots,
+                            std::span<const std::uint8_t> counted, const ClutterMapCells& cells,
+                            std::vector<double>& density) {
+  // Per form: the extent of the counted plots in the components after the mapped two.
+  std::unordered_map<int, std::array<std::pair<double, double>, kExtra>> extents;
+  std::unordered_map<std::uint64_t, Sums> map;
+  map.reserve(plots.size());
+  for (std::size_t j = 0; j < plots.size(); ++j) {
+    if (counted[j] == 0) continue;
+    const PlotMeasurement& p = plots[j];
+    const int form = form_of(p);
+    auto [it, fresh] = extents.try_emplace(form);
+    for (int i = 2; i < p.z.size(); ++i) {
+      auto& [low, high] = it->second[i - 2];
+      low = fresh ? p.z[i] : std::min(low, p.z[i]);
+      high = fresh ? p.z[i] : std::max(high, p.z[i]);
+    }
+    map[key(form, Grid(p, cells).cell_of(p))].add(p, +1);
+  }
+  for (std::size_t j = 0; j < plots.size(); ++j) {
+    const PlotMeasurement& p = plots[j];
+    const int form = form_of(p);
+    const auto extent = extents.find(form);
+    if (extent == extents.end()) continue;
+    const Grid grid(p, cells);
+    const Cell c = grid.cell_of(p);
+    Sums block;
+    for (std::int64_t da = -1; da <= 1; ++da) {
+      for (std::int64_t db = -1; db <= 1; ++db) {
+        const auto it = map.find(key(form, {c.a + da, grid.wrapped(c.b + db)}));
+        if (it != map.end()) block.add(it->second);
+      }
+    }
+    if (counted[j] != 0) block.add(p, -1);  // not itself
+    if (block.count <= 0) continue;
+    // The other components (elevation, range-rate, height) span what the block's plots span:
+    // the width of a uniform spread with their variance, at least the plot's own noise's and
+    // at most the form's extent; the form's extent when the block holds too few plots.
+    double volume = grid.block_area(c, p.model.kind == MeasurementKind::kPolar);
+    for (int i = 2; i < p.z.size(); ++i) {
+      const auto [low, high] = extent->second[i - 2];
+      const double whole = std::max(high - low, 1e-6);
+      double width = whole;
+      if (block.count >= kMinForSpread) {
+        const double n = block.count;
+        const double mean = block.sum[i - 2] / n;
+        const double variance = std::max(0.0, block.square[i - 2] / n - mean * mean);
+        width = std::clamp(std::sqrt(12.0 * variance), std::sqrt(12.0) * p.model.sigma[i], whole);
+      }
+      volume *= std::max(width, 1e-6);
+    }
+    density[j] = std::max(density[j], block.count / volume);
+  }
+}
+
+}  // namespace skytrack::clutter
