@@ -264,7 +264,6 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   touched_[static_cast<std::size_t>(t)] = 1;
   used_by_branch_[pair.plot] = 1;
   const std::string plot = std::to_string(plots_[pair.plot].plot_id);
-  const double spread = mode_spread(branch.estimate, layout_.dims);
   if (branch.branch == BranchType::kFather) {  // made independent earlier in this batch
     update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
                      profile_.association.gate_probability, profile_.track_life);
@@ -280,15 +279,13 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
     tree_.prune_children(number, changes_);
     apply(changes_, name(type, number) + " took plot " + plot + " (rule 8)", report, frame);
   }
-  // Rule 10: every branch update is followed by the confirmation test.
-  const LifeChange change = advance_life(branch.life, true, spread, branch_life_);
-  changes_.clear();
-  if (change.confirmed) {
+  // Rule 10: every branch update is followed by the confirmation test. A branch that took
+  // its pair is not deleted for its spread: the PDA posterior of a wide prior (a son started
+  // after misses) stays wide for a scan; misses end it (age_branches).
+  if (advance_life(branch.life, true, 0.0, branch_life_).confirmed) {
+    changes_.clear();
     tree_.promote(number, changes_);
     apply(changes_, "confirmed with plot " + plot + " (rule 10)", report, frame);
-  } else if (change.deleted) {
-    tree_.remove(number, changes_);
-    apply(changes_, "position spread too large", report, frame);
   }
 }
 
