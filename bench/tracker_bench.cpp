@@ -67,9 +67,10 @@ void run_batches(benchmark::State& state, bool dense_clutter_rules, bool branchi
   const std::vector<skytrack::PlotScan> batches = make_batches(targets, clutter);
   skytrack::config::TrackingProfile profile;
   profile.identity = {"bench", "1", ""};
-  if (dense_clutter_rules) {  // config/profiles/dense_clutter.yaml's initiation
+  if (dense_clutter_rules) {  // config/profiles/dense_clutter.yaml's initiation and map
     profile.initiation.m = 3;
     profile.initiation.n = 3;
+    profile.association.clutter_map.enabled = true;
   }
   profile.branching.enabled = branching;
   auto pipeline = skytrack::Pipeline::create(profile);
