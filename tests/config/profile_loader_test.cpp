@@ -66,6 +66,7 @@ mode_transition: [[0.6, 0.1, 0.1, 0.1, 0.1], [0.1, 0.6, 0.1, 0.1, 0.1],
                   [0.1, 0.1, 0.1, 0.1, 0.6]]
 initial_mode_probabilities: [0.2, 0.2, 0.2, 0.2, 0.2]
 association: {method: gnn, clutter_density: 1e-8}
+initiation: {gated_seed_beta: 0.2}
 branching: {enabled: false, manoeuvre_models: [right, singer]}
 )"),
                                      "p.yaml");
@@ -88,6 +89,7 @@ branching: {enabled: false, manoeuvre_models: [right, singer]}
   EXPECT_EQ(profile->association.method, AssociationMethod::kGnn);
   EXPECT_EQ(profile->association.clutter_density, 1e-8);
   EXPECT_THAT(profile->branching.manoeuvre_models, ElementsAre("right", "singer"));
+  EXPECT_EQ(profile->initiation.gated_seed_beta, 0.2);
 }
 
 TEST(ProfileLoader, AcceptsEveryModeName) {
@@ -125,6 +127,8 @@ TEST(ProfileLoader, OutOfRangeValueSaysTheRangeAndTheValue) {
             "p.yaml:4: association.gate_probability: expected a number in (0, 1), got 1.5");
   EXPECT_EQ(error_of("track_life:\n  confirm_n: 0\n"),
             "p.yaml:4: track_life.confirm_n: expected an integer >= 1, got 0");
+  EXPECT_EQ(error_of("initiation:\n  gated_seed_beta: 1.5\n"),
+            "p.yaml:4: initiation.gated_seed_beta: expected a number in [0, 1], got 1.5");
   EXPECT_EQ(error_of("dimension: 4\n"),
             "p.yaml:3: dimension: expected an integer in [2, 3], got 4");
   EXPECT_EQ(error_of("mode_transition_interval: -4\n"),
