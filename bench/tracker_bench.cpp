@@ -62,7 +62,8 @@ std::vector<skytrack::PlotScan> make_batches(int targets, int clutter) {
   return batches;
 }
 
-void run_batches(benchmark::State& state, bool dense_clutter_rules, bool branching = true) {
+void run_batches(benchmark::State& state, bool dense_clutter_rules, bool branching = true,
+                 bool gated_seeds = true) {
   const int targets = static_cast<int>(state.range(0)), clutter = static_cast<int>(state.range(1));
   const std::vector<skytrack::PlotScan> batches = make_batches(targets, clutter);
   skytrack::config::TrackingProfile profile;
@@ -73,6 +74,7 @@ void run_batches(benchmark::State& state, bool dense_clutter_rules, bool branchi
     profile.association.clutter_map.enabled = true;
   }
   profile.branching.enabled = branching;
+  if (!gated_seeds) profile.initiation.gated_seed_beta = 1.0;  // only plots in no gate seed
   auto pipeline = skytrack::Pipeline::create(profile);
   std::size_t next = 0;
   for (; next < kWarmup; ++next) pipeline->process(batches[next]);
@@ -119,6 +121,10 @@ void BM_NoBranching(benchmark::State& state) {
 void BM_DenseClutterRules(benchmark::State& state) {
   run_batches(state, true);
 }
+// The initiation rule before initiation.gated_seed_beta: plots inside any gate never seed.
+void BM_DenseClutterRulesNoGatedSeeds(benchmark::State& state) {
+  run_batches(state, true, true, false);
+}
 BENCHMARK(BM_DefaultProfile)
     ->ArgsProduct({{10, 100, 500, 1000}, {100, 1000, 5000}})
     ->Iterations(kTimed)
@@ -129,6 +135,11 @@ BENCHMARK(BM_NoBranching)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DenseClutterRules)
     ->ArgsProduct({{10, 100, 500, 1000}, {100, 1000, 5000}})
+    ->Iterations(kTimed)
+    ->Unit(benchmark::kMillisecond);
+
+BENCHMARK(BM_DenseClutterRulesNoGatedSeeds)
+    ->ArgsProduct({{500}, {1000, 5000}})
     ->Iterations(kTimed)
     ->Unit(benchmark::kMillisecond);
 

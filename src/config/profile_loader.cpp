@@ -222,6 +222,7 @@ InitiationSpec read_initiation(YamlSection s) {
   s.integer("n", in.n, Range{2.0});
   s.number("min_speed", in.min_speed, Range::non_negative());
   s.number("max_speed", in.max_speed, Range::positive());
+  s.number("gated_seed_beta", in.gated_seed_beta, Range::probability());
   check_order(s, "m", in.m, "n", in.n, false);
   check_order(s, "min_speed", in.min_speed, "max_speed", in.max_speed, true);
   s.finish();

@@ -182,6 +182,7 @@ void PointTracker::make_measurements(const PlotScan& scan, ScanReport& report) {
   rejected_.assign(plots_.size(), 0);
   gated_.assign(plots_.size(), 0);
   used_by_branch_.assign(plots_.size(), 0);
+  held_.assign(plots_.size(), 0);
 }
 
 double PointTracker::plot_spread_at(const Eigen::Vector3d& position, const PlotScan& scan) const {
@@ -397,6 +398,8 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
         beta.push_back(result.beta(ti, column(pool[list[k]].plot) + 1));
         mine.push_back(list[k]);
       }
+      // The non-manoeuvre gates decide which plots the tracks explain (initiation).
+      if (&pool == &candidates_) note_explained(pool, mine, beta);
       on_track(t, mine, beta, result.beta(ti, 0));
     }
   }
@@ -513,10 +516,40 @@ ImmEstimate PointTracker::start_estimate(const Initiation& initiation, TrackLife
   return estimate;
 }
 
+void PointTracker::note_explained(const std::vector<Candidate>& pool, std::span<const int> mine,
+                                  std::span<const double> beta) {
+  // A track whose most likely plot has more than gated_seed_beta of its weight explains that
+  // plot alone: the others in its gate are more than it can explain (one plot per target)
+  // and stay free for initiation. A track without such a plot (its own plot missed, or its
+  // target manoeuvring away from its prediction) may be explained by any of them: it holds
+  // its whole gate, so a chain cannot start on its target's plots while it lags.
+  int best = -1;
+  double best_beta = -1.0;
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    if (beta[k] > best_beta) {
+      best_beta = beta[k];
+      best = pool[mine[k]].plot;
+    }
+  }
+  if (best < 0) return;
+  if (best_beta > profile_.initiation.gated_seed_beta) {
+    held_[best] = 1;
+    return;
+  }
+  for (const int k : mine) held_[pool[k].plot] = 1;
+}
+
+bool PointTracker::free_for_initiation(std::size_t j) const {
+  if (rejected_[j] || used_by_branch_[j]) return false;
+  // In no gate, or in the gates of tracks that each explain another plot: a target of its
+  // own, such as a formation member inside its neighbour's gate.
+  return gated_[j] == 0 || held_[j] == 0;
+}
+
 void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame) {
   std::vector<PlotMeasurement> unused;
   for (std::size_t j = 0; j < plots_.size(); ++j) {
-    if (!gated_[j] && !rejected_[j] && !used_by_branch_[j]) unused.push_back(plots_[j]);
+    if (free_for_initiation(j)) unused.push_back(plots_[j]);
   }
   const auto covered = [&](const Eigen::Vector3d& p) { return covers(scan, p); };
   for (const Initiation& initiation : initiator_.step(batches_, scan.time, unused, covered)) {

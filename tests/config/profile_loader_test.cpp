@@ -69,6 +69,7 @@ association:
   method: gnn
   clutter_density: 1e-8
   clutter_map: {enabled: true, range_cell: 2000, azimuth_cell: 0.02, cartesian_cell: 3000}
+initiation: {gated_seed_beta: 0.2}
 branching: {enabled: false, manoeuvre_models: [right, singer]}
 )"),
                                      "p.yaml");
@@ -95,6 +96,7 @@ branching: {enabled: false, manoeuvre_models: [right, singer]}
   EXPECT_EQ(profile->association.clutter_map.azimuth_cell, 0.02);
   EXPECT_EQ(profile->association.clutter_map.cartesian_cell, 3000.0);
   EXPECT_THAT(profile->branching.manoeuvre_models, ElementsAre("right", "singer"));
+  EXPECT_EQ(profile->initiation.gated_seed_beta, 0.2);
 }
 
 TEST(ProfileLoader, AcceptsEveryModeName) {
@@ -137,6 +139,8 @@ TEST(ProfileLoader, OutOfRangeValueSaysTheRangeAndTheValue) {
             "p.yaml:4: association.gate_probability: expected a number in (0, 1), got 1.5");
   EXPECT_EQ(error_of("track_life:\n  confirm_n: 0\n"),
             "p.yaml:4: track_life.confirm_n: expected an integer >= 1, got 0");
+  EXPECT_EQ(error_of("initiation:\n  gated_seed_beta: 1.5\n"),
+            "p.yaml:4: initiation.gated_seed_beta: expected a number in [0, 1], got 1.5");
   EXPECT_EQ(error_of("dimension: 4\n"),
             "p.yaml:3: dimension: expected an integer in [2, 3], got 4");
   EXPECT_EQ(error_of("mode_transition_interval: -4\n"),

@@ -120,6 +120,11 @@ struct InitiationSpec {
   int n = 4;                 // ... within this many consecutive scans
   double min_speed = 10.0;   // [m/s] slower plot pairs are stationary clutter
   double max_speed = 700.0;  // [m/s] faster plot pairs cannot be one target
+  // A track whose most likely plot has an association probability above this explains that
+  // plot alone; the other plots in its gate may still seed (or extend) chains, e.g. a
+  // formation member inside its neighbour's gate. A track without such a plot holds its
+  // whole gate. 1: only plots in no gate seed chains.
+  double gated_seed_beta = 0.7;
   bool operator==(const InitiationSpec&) const = default;
 };
 

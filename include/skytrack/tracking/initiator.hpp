@@ -1,6 +1,7 @@
 #pragma once
-// M-of-N track initiation by plot-to-plot association with a speed gate. Plots nobody else
-// used become seeds; a later plot whose distance to a seed implies a speed within
+// M-of-N track initiation by plot-to-plot association with a speed gate. Plots the tracks
+// leave unexplained (in no gate, or no track's most likely plot: the tracker decides) become
+// seeds; a later plot whose distance to a seed implies a speed within
 // [min_speed, max_speed] forms a candidate chain, which grows by the nearest plot to its
 // constant-velocity prediction. A chain with M plots within N scans becomes a tentative
 // track; chains that cannot reach M in time are dropped. Chains are cheap (no filter), so
@@ -33,7 +34,7 @@ class Initiator {
   /// Tells whether a batch looked at a position (a sector batch covers part of the sky).
   using Coverage = std::function<bool(const Eigen::Vector3d&)>;
 
-  /// One batch of plots that no track used, taken at `time`. Seeds and chains age by the
+  /// One batch of plots that no track explains, taken at `time`. Seeds and chains age by the
   /// batches that cover them ("looks"), so a revolution reported in sectors counts once.
   /// Returns the chains completed by this batch.
   const std::vector<Initiation>& step(std::uint64_t batch, double time,

@@ -7,7 +7,9 @@
 // own update time (the time of its nearest candidate plot, so a rotating antenna's plots are
 // used at the time they were measured); tracks sharing plots form clusters whose JPDA
 // marginals (exact, or k-best above a size) weight each track's IMM-PDA update. Plots in no
-// gate feed the initiator. Reported states are predicted to the batch time.
+// gate, and gated plots the association leaves unexplained (the gating tracks each give more
+// than initiation.gated_seed_beta to another plot: a formation member in its neighbour's
+// gate), feed the initiator. Reported states are predicted to the batch time.
 //
 // With branching on (profile `branching`, paper 003 §1-§2.3) each reported track (father) may
 // carry hidden sons and grandsons: a second, wider manoeuvre gate per track, pairs of five
@@ -136,6 +138,11 @@ class PointTracker {
   void associate_and_update(ScanReport& report, TrackFrame& frame);
   void update_track(int t, std::span<const int> candidates, std::span<const double> beta_plots,
                     double beta_miss, TrackFrame& frame);
+  /// Marks the plots a track's association holds back from initiation (held_).
+  void note_explained(const std::vector<Candidate>& pool, std::span<const int> mine,
+                      std::span<const double> beta);
+  /// True when plot j may feed the initiator: in no gate, or in gates but unexplained.
+  bool free_for_initiation(std::size_t j) const;
   void initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame);
 
   // Branch tracking (point_tracker_branches.cpp).
@@ -217,6 +224,9 @@ class PointTracker {
   std::vector<BranchPair> branch_pairs_;
   std::vector<std::uint8_t> touched_;         // per track: updated or created this batch
   std::vector<std::uint8_t> used_by_branch_;  // per plot: taken by a confirmed pair
+  // Per plot: held by a non-manoeuvre gate, i.e. the most likely plot of a track that
+  // explains it, or any plot of a track that explains none (initiation.gated_seed_beta).
+  std::vector<std::uint8_t> held_;
   std::vector<BranchChange> changes_;
   JpdaResult pda_result_;
   std::vector<int> neighbours_;
