@@ -268,8 +268,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
     update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
                      profile_.association.gate_probability, profile_.track_life);
     const LifeChange change = advance_life(
-        branch.life, true, position_spread(filter_.combine(branch.estimate), layout_.dims),
-        profile_.track_life);
+        branch.life, true, mode_spread(branch.estimate, layout_.dims), profile_.track_life);
     if (change.confirmed) add_event(frame, "confirmed", number, "");
     return;
   }
