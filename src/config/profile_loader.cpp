@@ -181,6 +181,11 @@ AssociationSpec read_association(YamlSection s) {
   map.number("range_cell", a.clutter_map.range_cell, Range::positive());
   map.number("azimuth_cell", a.clutter_map.azimuth_cell, Range::positive());
   map.number("cartesian_cell", a.clutter_map.cartesian_cell, Range::positive());
+  if (a.clutter_map.enabled && a.clutter_density) {
+    map.error("enabled",
+              "the clutter map refines clutter_density: auto; it cannot be on with "
+              "a fixed clutter_density");
+  }
   map.finish();
   s.integer("max_exact_cluster_size", a.max_exact_cluster_size, kAtLeastOne);
   s.integer("k_best", a.k_best, kAtLeastOne);

@@ -68,7 +68,7 @@ initial_mode_probabilities: [0.2, 0.2, 0.2, 0.2, 0.2]
 association:
   method: gnn
   clutter_density: 1e-8
-  clutter_map: {enabled: true, range_cell: 2000, azimuth_cell: 0.02, cartesian_cell: 3000}
+  clutter_map: {enabled: false, range_cell: 2000, azimuth_cell: 0.02, cartesian_cell: 3000}
 initiation: {gated_seed_beta: 0.2}
 branching: {enabled: false, manoeuvre_models: [right, singer]}
 )"),
@@ -91,7 +91,7 @@ branching: {enabled: false, manoeuvre_models: [right, singer]}
   EXPECT_EQ(m[4].time_constant, 10.0);
   EXPECT_EQ(profile->association.method, AssociationMethod::kGnn);
   EXPECT_EQ(profile->association.clutter_density, 1e-8);
-  EXPECT_TRUE(profile->association.clutter_map.enabled);
+  EXPECT_FALSE(profile->association.clutter_map.enabled);
   EXPECT_EQ(profile->association.clutter_map.range_cell, 2000.0);
   EXPECT_EQ(profile->association.clutter_map.azimuth_cell, 0.02);
   EXPECT_EQ(profile->association.clutter_map.cartesian_cell, 3000.0);
@@ -113,6 +113,12 @@ TEST(ProfileLoader, UnknownKeyNamesThePathAndLine) {
             "p.yaml:5: association.gate_prob: unknown key (known keys here: method, "
             "gate_probability, detection_probability, clutter_density, clutter_map, "
             "max_exact_cluster_size, k_best)");
+}
+
+TEST(ProfileLoader, ClutterMapNeedsAutoDensity) {
+  EXPECT_EQ(error_of("association:\n  clutter_density: 1e-9\n  clutter_map: {enabled: true}\n"),
+            "p.yaml:5: association.clutter_map.enabled: the clutter map refines clutter_density: "
+            "auto; it cannot be on with a fixed clutter_density");
 }
 
 TEST(ProfileLoader, ClutterMapCellsArePositive) {
