@@ -319,10 +319,11 @@ TEST(BranchTracker, FatherDeletedByItsLifeWaitsUnreportedForItsSon) {
 }
 
 TEST(BranchTracker, FatherTooUncertainToGateYieldsToItsSon) {
-  // GIVEN a position-spread limit above track 1's spread after one missed scan but below its
-  // prediction over two, and son 2 started in the scan it missed
+  // GIVEN a position-spread limit above track 1's spread after one missed scan, with 1.2
+  // times it (the suspension before gating) below its prediction over two, and son 2
+  // started in the scan it missed
   config::TrackingProfile profile = branch_profile();
-  profile.track_life.delete_position_sigma = 14.5;
+  profile.track_life.delete_position_sigma = 13.0;
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 150.0}});
@@ -339,6 +340,37 @@ TEST(BranchTracker, FatherTooUncertainToGateYieldsToItsSon) {
   EXPECT_EQ(s.events("branch_promoted").size(), 1u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_NEAR(s.track(1)->position.y(), 300.0, 30.0);
+}
+
+TEST(BranchTracker, FatherSuspendedByItsUpdateStartsSonsFromItsLikelyPlots) {
+  // GIVEN a position-spread limit that track 1's update with two plots 60 m apart exceeds
+  config::TrackingProfile profile = branch_profile();
+  profile.track_life.delete_position_sigma = 14.5;
+  Script s(profile);
+  s.start();
+  // WHEN both plots lie in its non-manoeuvre gate, each likelier than a miss
+  s.scan(4, {{400.0, 30.0}, {400.0, -30.0}});
+  // THEN its update suspends it, and the plots its IMM-JPDA weighed above its miss start
+  // its sons with those weights (not the manoeuvre gate's): one son per plot
+  ASSERT_EQ(s.events("suspended").size(), 1u);
+  EXPECT_TRUE(s.reported().empty());
+  EXPECT_EQ(s.events("branch_created"),
+            (std::vector<std::string>{"1: son 2 of track 1 from plot 401",
+                                      "1: son 3 of track 1 from plot 402"}));
+  for (const std::int64_t plot : {401, 402}) {
+    double father = -1.0, son = -2.0;
+    for (const Association& a : s.frame.associations) {
+      if (a.plot != plot) continue;
+      if (a.track == 1) father = a.probability;
+      if (a.track == 2 || a.track == 3) son = a.probability;
+    }
+    EXPECT_DOUBLE_EQ(son, father) << "plot " << plot;
+  }
+  // AND the son that is followed replaces it under its number
+  s.scan(5, {{500.0, 60.0}});
+  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_NEAR(s.track(1)->position.y(), 60.0, 30.0);
 }
 
 TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
