@@ -161,6 +161,7 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
 
   start = Clock::now();
   initiate(scan, report, frame);
+  if (branching()) retire_doomed_fathers(frame);
   report_tracks(scan.time, report, frame);
   report.manage = since(start);
 }
@@ -215,6 +216,10 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   batch_mid_ = batch_mid;
   half_span_ = half_span;
   predicted_.resize(tracks_.size());
+  if (branching()) {  // the manoeuvre gates start from the estimates before this batch
+    previous_.clear();
+    for (const PointTrack& track : tracks_) previous_.push_back(track.estimate);
+  }
   covered_.assign(tracks_.size(), 1);
   suspended_at_gate_.clear();
   const double widest = gate_threshold_[kMaxMeasurementDim];
@@ -552,7 +557,15 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     if (free_for_initiation(j)) unused.push_back(plots_[j]);
   }
   const auto covered = [&](const Eigen::Vector3d& p) { return covers(scan, p); };
+  if (branching()) find_lost_fathers(scan);
   for (const Initiation& initiation : initiator_.step(batches_, scan.time, unused, covered)) {
+    if (branching()) {
+      const int father = lost_father_of(initiation);
+      if (father >= 0) {
+        start_chain_branch(father, initiation, report, frame);
+        continue;
+      }
+    }
     PointTrack track;
     track.id = next_id_++;
     track.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
@@ -566,7 +579,9 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
       slots_[track.id] = static_cast<int>(tracks_.size());
     }
     std::string detail = "from plots";
-    for (const PlotMeasurement& p : initiation.plots) detail += " " + std::to_string(p.plot_id);
+    for (const PlotMeasurement& p : initiation.plots) {
+      detail.append(" ").append(std::to_string(p.plot_id));
+    }
     add_event(frame, "initiated", track.id, detail);
     frame.associations.push_back({track.id, initiation.plots.back().plot_id, 1.0});
     tracks_.push_back(std::move(track));

@@ -184,10 +184,8 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
       manoeuvre);
 }
 
-void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) {
-  const PointTrack& track = tracks_[t];
-  // A father is updated by now: its gate starts from its prediction (the prior).
-  const ImmEstimate& prior = track.branch == BranchType::kFather ? predicted_[t] : track.estimate;
+std::pair<Eigen::Vector3d, double> PointTracker::manoeuvre_reach(const ImmEstimate& prior,
+                                                                 const PlotScan& scan) const {
   const ImmEstimate mid = manoeuvre_prediction(prior, std::max(batch_mid_, prior.time));
   const Eigen::Vector3d centre = position_of(manoeuvre_->combine(mid).mean, layout_.dims);
   // The manoeuvre gate is the union of its models' gates: cover every model's centre.
@@ -198,6 +196,15 @@ void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) 
         radius,
         offset + search_radius(mode, centre, manoeuvre_threshold_[kMaxMeasurementDim], scan));
   }
+  return {centre, radius};
+}
+
+void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) {
+  const PointTrack& track = tracks_[t];
+  // The manoeuvre models run from the track's estimate before this batch (a father is
+  // updated by now), over the whole interval to the plot.
+  const ImmEstimate& prior = previous_[static_cast<std::size_t>(t)];
+  const auto [centre, radius] = manoeuvre_reach(prior, scan);
   if (covered_[t] == 0 && !covers_region(scan, centre, radius)) return;
   index_.within(centre, radius, neighbours_);
   if (neighbours_.empty()) return;
@@ -358,7 +365,8 @@ ImmEstimate PointTracker::son_start(int father, const PlotMeasurement& plot) con
   // The father's state from its latest update, predicted to the plot by the manoeuvre
   // models (their wider process noise lets the plot turn the velocity), then updated with
   // the plot: a start at the father's latest update that keeps what it knew of the speed.
-  const ImmEstimate m = manoeuvre_prediction(predicted_[father], plot.time);
+  const ImmEstimate m =
+      manoeuvre_prediction(previous_[static_cast<std::size_t>(father)], plot.time);
   const Gaussian g = manoeuvre_->combine(m);
   const auto& probabilities = profile_.initial_mode_probabilities;
   const ImmEstimate start =
@@ -427,6 +435,9 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
       apply(changes_, "no plot", report, frame);
     }
   }
+}
+
+void PointTracker::retire_doomed_fathers(TrackFrame& frame) {
   // A doomed father that may start no more sons goes with its last branch.
   for (PointTrack& father : tracks_) {
     if (father.branch != BranchType::kFather || father.replaced || !father.doomed ||
@@ -439,6 +450,70 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
     changes_.clear();
     tree_.remove(father.id, changes_);
   }
+}
+
+void PointTracker::find_lost_fathers(const PlotScan& scan) {
+  lost_fathers_.clear();
+  for (std::size_t f = 0; f < tracks_.size() && f < previous_.size(); ++f) {
+    const PointTrack& father = tracks_[f];
+    if (father.branch != BranchType::kFather || !father.doomed || father.replaced ||
+        father.life.status == TrackStatus::kDeleted ||
+        !tree_.can_branch(father.id, profile_.branching.max_children)) {
+      continue;
+    }
+    const auto [centre, radius] = manoeuvre_reach(previous_[f], scan);
+    lost_fathers_.push_back({static_cast<int>(f), centre, radius});
+  }
+}
+
+int PointTracker::lost_father_of(const Initiation& initiation) const {
+  // §3.3: a plot-to-plot manoeuvre association starts a branch. A chain whose latest plot
+  // lies in the manoeuvre gate of a suspended father continues that father.
+  const PlotMeasurement& plot = initiation.plots.back();
+  const Eigen::Vector3d position = approximate_position(plot);
+  int best = -1;
+  double best_nis = manoeuvre_threshold_[plot.model.size()];
+  for (const LostFather& lost : lost_fathers_) {
+    if ((position - lost.centre).norm() > lost.radius) continue;
+    const ImmEstimate& prior = previous_[static_cast<std::size_t>(lost.track)];
+    const PlotHypothesis h = manoeuvre_->hypothesise(manoeuvre_prediction(prior, plot.time), plot);
+    if (h.usable && h.min_nis <= best_nis) {
+      best_nis = h.min_nis;
+      best = lost.track;
+    }
+  }
+  return best;
+}
+
+void PointTracker::start_chain_branch(int father, const Initiation& initiation, ScanReport& report,
+                                      TrackFrame& frame) {
+  const std::int64_t father_id = tracks_[father].id;
+  const double score = tracks_[father].score;
+  const PlotMeasurement& plot = initiation.plots.back();
+  if (!make_room(father_id, father_id, score, plot.plot_id, report, frame)) return;
+  PointTrack branch;
+  branch.id = next_id_++;
+  branch.branch = BranchType::kSon;
+  branch.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
+  branch.estimate = start_estimate(initiation, branch.life);
+  branch.quality = tracks_[father].quality;
+  branch.first_plot = initiation.plots.front();
+  branch.first_plot_batch = batches_ + 1 - static_cast<std::uint64_t>(initiation.scans);
+  branch.last_plot = plot;
+  branch.last_plot_batch = batches_;
+  branch.score = score;
+  tree_.add_branch(branch.id, father_id);
+  std::string detail = name(BranchType::kSon, branch.id) + " of " +
+                       name(BranchType::kFather, father_id) + " from plots";
+  for (const PlotMeasurement& p : initiation.plots) {
+    detail.append(" ").append(std::to_string(p.plot_id));
+  }
+  add_event(frame, "branch_created", father_id,
+            detail.append(" (a plot chain in its manoeuvre gate)"));
+  frame.associations.push_back({branch.id, plot.plot_id, 1.0});
+  ++report.branches_created;
+  slots_[branch.id] = static_cast<int>(tracks_.size());
+  tracks_.push_back(std::move(branch));
 }
 
 void PointTracker::apply(std::span<const BranchChange> changes, const std::string& reason,

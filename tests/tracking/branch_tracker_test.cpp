@@ -393,6 +393,57 @@ TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
   EXPECT_EQ(s.frame.tracks[0].status, TrackStatus::kDeleted);
 }
 
+TEST(BranchTracker, PlotChainInTheManoeuvreGateOfASuspendedFatherContinuesIt) {
+  // GIVEN track 1 suspended by a miss at t = 4 (spread limit 12 m); its target comes back
+  // towards its line at 300 m/s from 1000 m and 700 m off at t = 5 and 6, outside the
+  // father's manoeuvre gate, so those plots start no son
+  config::TrackingProfile profile = branch_profile();
+  profile.track_life.delete_position_sigma = 12.0;
+  Script s(profile);
+  s.start();
+  s.scan(4, {});
+  ASSERT_EQ(s.events("suspended").size(), 1u);
+  s.scan(5, {{500.0, 1000.0}});
+  s.scan(6, {{600.0, 700.0}});
+  s.scan(7, {});
+  ASSERT_TRUE(s.events("branch_created").empty());
+  // WHEN the chain's third plot falls inside the manoeuvre gate (100 m off) in the scan whose
+  // miss, its fifth, ends the father's own branching
+  s.scan(8, {{800.0, 100.0}});
+  // THEN the chain (plot-to-plot manoeuvre association, §3.3) starts son 2 of track 1 rather
+  // than a new track, and the father waits for it, unreported
+  EXPECT_EQ(
+      s.events("branch_created"),
+      (std::vector<std::string>{
+          "1: son 2 of track 1 from plots 501 601 801 (a plot chain in its manoeuvre gate)"}));
+  EXPECT_TRUE(s.events("initiated").empty());
+  EXPECT_TRUE(s.events("deleted").empty());
+  EXPECT_TRUE(s.reported().empty());
+  // WHEN the son takes its next plot, THEN it is confirmed and carries number 1 (rule 10)
+  s.scan(9, {{900.0, -200.0}});
+  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_NEAR(s.track(1)->position.y(), -200.0, 30.0);
+  EXPECT_NEAR(s.track(1)->velocity.y(), -300.0, 30.0);
+}
+
+TEST(BranchTracker, ChainOutsideTheManoeuvreGateOfASuspendedFatherIsANewTrack) {
+  // GIVEN the same script, the chain's third plot 1000 m off the father's prediction
+  config::TrackingProfile profile = branch_profile();
+  profile.track_life.delete_position_sigma = 12.0;
+  Script s(profile);
+  s.start();
+  s.scan(4, {});
+  s.scan(5, {{500.0, 1000.0}});
+  s.scan(6, {{600.0, 1000.0}});
+  s.scan(7, {});
+  s.scan(8, {{800.0, 1000.0}});
+  // THEN it is initiated as track 2 and the father, with no branch, is deleted
+  EXPECT_TRUE(s.events("branch_created").empty());
+  EXPECT_EQ(s.events("initiated"), (std::vector<std::string>{"2: from plots 501 601 801"}));
+  EXPECT_EQ(s.events("deleted"), (std::vector<std::string>{"1: no branch left to replace it"}));
+}
+
 TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {
   // GIVEN the same script with branching off
   config::TrackingProfile profile = branch_profile();

@@ -10,11 +10,12 @@
 # repository root).
 #
 # Usage: tools/experiments/compare-branching.sh [--seeds N] [--first-seed S] [--jobs J]
-#            [--profile P] [--out DIR]
+#            [--profile P] [--only exp1|exp2|exp3] [--out DIR]
 #   --profile P     the branching-on profile (default: the built-in default profile)
 #   --seeds N       seeds per scenario (default 100): S, S+1, ..., S+N-1
 #   --first-seed S  first seed (default 1)
 #   --jobs J        runs at once (default 2)
+#   --only E        one experiment only (repeatable): exp1, exp2 or exp3
 #   --out DIR       plots, truth, tracks and scores (default out/experiments/compare-branching;
 #                   out/ is git-ignored)
 # Columns, per target and run (mean over the seeds), from the scan its first firm
@@ -35,6 +36,7 @@ skytrack=${SKYTRACK:-$root/build-rel/tools/skytrack/skytrack}
 seeds=100
 first_seed=1
 jobs=2
+only=()
 out="$root/out/experiments/compare-branching"
 
 usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; }
@@ -45,6 +47,7 @@ while [[ $# -gt 0 ]]; do
     --jobs) jobs=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --profile) on_profile=$2; shift 2 ;;
+    --only) only+=("$2"); shift 2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "compare-branching: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
@@ -54,7 +57,11 @@ done
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "compare-branching: bad --jobs" >&2; exit 2; }
 [[ -x "$skytrack" ]] || { echo "compare-branching: no skytrack binary at $skytrack (set SKYTRACK)" >&2; exit 2; }
 
-scenarios=(paper003_exp1_racetrack_figure_eight paper003_exp2_missed_in_clutter paper003_exp3_uturn)
+scenarios=()
+for scen in paper003_exp1_racetrack_figure_eight paper003_exp2_missed_in_clutter paper003_exp3_uturn; do
+  [[ ${#only[@]} -eq 0 || " ${only[*]} " == *" ${scen:9:4} "* ]] && scenarios+=("$scen")
+done
+[[ ${#scenarios[@]} -gt 0 ]] || { echo "compare-branching: --only takes exp1, exp2 or exp3" >&2; exit 2; }
 off_profile="$root/config/profiles/no_branching.yaml"
 on_profile=${on_profile:-}
 [[ -z "$on_profile" ]] || "$skytrack" check-profile "$on_profile" >/dev/null

@@ -23,6 +23,7 @@
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "skytrack/association/cluster_builder.hpp"
@@ -152,6 +153,10 @@ class PointTracker {
   /// Manoeuvre candidates of track t; with `for_update` (grandsons) also its IMM hypotheses
   /// and its prediction at the nearest candidate's time.
   void gate_manoeuvre(const PlotScan& scan, int t, bool for_update);
+  /// Centre and radius of the region holding the manoeuvre gate started from `prior`, at the
+  /// batch's middle.
+  std::pair<Eigen::Vector3d, double> manoeuvre_reach(const ImmEstimate& prior,
+                                                     const PlotScan& scan) const;
   /// JPDA over one pair kind (§2.1 (3)); collects its valid pairs, updates fathers.
   void solve_kind(PairKind kind, ScanReport& report, TrackFrame& frame);
   /// update_track for a father; a firm father its life deletes becomes doomed instead.
@@ -172,6 +177,15 @@ class PointTracker {
   bool make_room(std::int64_t father, std::int64_t parent, double score, std::int64_t plot_id,
                  ScanReport& report, TrackFrame& frame);
   void age_branches(ScanReport& report, TrackFrame& frame);
+  /// Deletes the doomed fathers that have no branch left and may start no more sons.
+  void retire_doomed_fathers(TrackFrame& frame);
+  /// Collects the suspended fathers that may still branch, with their manoeuvre gates' reach.
+  void find_lost_fathers(const PlotScan& scan);
+  /// The suspended father in whose manoeuvre gate a new plot chain ends (§3.3), or -1.
+  int lost_father_of(const Initiation& initiation) const;
+  /// Starts the chain as a son of `father` instead of a new father.
+  void start_chain_branch(int father, const Initiation& initiation, ScanReport& report,
+                          TrackFrame& frame);
   void apply(std::span<const BranchChange> changes, const std::string& reason, ScanReport& report,
              TrackFrame& frame);
   int slot(std::int64_t number) const;
@@ -209,9 +223,16 @@ class PointTracker {
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> rejected_;
   std::vector<std::uint8_t> gated_;
-  std::vector<std::uint8_t> covered_;            // per track: inside this batch's coverage
-  std::vector<int> suspended_at_gate_;           // fathers suspended on their prediction
-  std::vector<ImmEstimate> predicted_;           // per track, at its update time
+  std::vector<std::uint8_t> covered_;   // per track: inside this batch's coverage
+  std::vector<int> suspended_at_gate_;  // fathers suspended on their prediction
+  std::vector<ImmEstimate> predicted_;  // per track, at its update time
+  std::vector<ImmEstimate> previous_;   // per track, before this batch (branching)
+  struct LostFather {  // a suspended father and its manoeuvre gate's reach this batch
+    int track = 0;
+    Eigen::Vector3d centre;
+    double radius = 0.0;
+  };
+  std::vector<LostFather> lost_fathers_;
   std::vector<Candidate> candidates_;            // non-manoeuvre gates
   std::vector<Candidate> manoeuvre_candidates_;  // manoeuvre gates (branching)
   std::vector<int> kind_list_;
