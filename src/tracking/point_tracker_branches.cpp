@@ -2,8 +2,9 @@
 // §2.1-2.3 and §3.3 (Ma, Xu, Zhang 2020).
 //
 // Per batch, after the non-manoeuvre gates of fathers and sons (point_tracker.cpp), and with
-// manoeuvre gates (the manoeuvre models, started from the track's prediction) made only for
-// the tracks that can still use a manoeuvre pair once the non-manoeuvre kinds are confirmed:
+// manoeuvre gates (the manoeuvre models, started from the track's estimate before the batch)
+// made only for the tracks that can still use a manoeuvre pair once the non-manoeuvre kinds
+// are confirmed:
 //   §2.1  JPDA marginals per pair kind (branch type x gate), each over that kind's pairs. The
 //         fathers' non-manoeuvre kind is exactly the plain tracker's IMM-JPDA: it updates the
 //         fathers, which are reported. A pair is a valid association when its probability
@@ -15,7 +16,8 @@
 //         (3) grandson manoeuvre pair: likewise (rules 9, 10); (4) son manoeuvre pair: a
 //         grandson from the son's first plot and this plot (rule 7); (5) father manoeuvre
 //         pair: a son from the father's latest update plot and this plot (rule 6). Both
-//         are plot-to-plot manoeuvre starts (§3.3).
+//         are plot-to-plot manoeuvre starts (§3.3), as is a plot chain of the initiator that
+//         ends in a suspended father's manoeuvre gate: it becomes that father's son.
 // Branches without a confirmed pair coast and miss; their track life deletes them. Only
 // fathers branch once confirmed ("stably tracked", §0); a tentative father is plain IMM-JPDA.
 #include <algorithm>
