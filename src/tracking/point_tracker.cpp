@@ -187,12 +187,17 @@ void PointTracker::make_measurements(const PlotScan& scan, ScanReport& report) {
 }
 
 double PointTracker::plot_spread_at(const Eigen::Vector3d& position, const PlotScan& scan) const {
-  // Plot position spread near a track from the batch's sigmas (plot overrides are rare).
+  // Plot position spread near a track from the batch's sigmas (plot overrides are rare); in
+  // 3-D the height error counts too (elevation is often measured worse than azimuth).
   const config::MeasurementSigmas& d = profile_.measurement.default_sigma;
   const MeasurementSigma& s = scan.sigma;
+  const bool height = layout_.dims == 3;
   const double range = (position - scan.platform.position).norm();
-  const double polar = std::max(s.range.value_or(d.range), range * s.azimuth.value_or(d.azimuth));
-  const double cartesian = std::max(s.x.value_or(d.x), s.y.value_or(d.y));
+  const double angle = std::max(s.azimuth.value_or(d.azimuth),
+                                height ? s.elevation.value_or(d.elevation) : 0.0);
+  const double polar = std::max(s.range.value_or(d.range), range * angle);
+  const double cartesian =
+      std::max({s.x.value_or(d.x), s.y.value_or(d.y), height ? s.z.value_or(d.z) : 0.0});
   return std::max(polar, cartesian);
 }
 
@@ -217,8 +222,9 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   half_span_ = half_span;
   predicted_.resize(tracks_.size());
   if (branching()) {  // the manoeuvre gates start from the estimates before this batch
-    previous_.clear();
-    for (const PointTrack& track : tracks_) previous_.push_back(track.estimate);
+    // Assigned in place: the slots keep their storage from batch to batch.
+    previous_.resize(tracks_.size());
+    for (std::size_t t = 0; t < tracks_.size(); ++t) previous_[t] = tracks_[t].estimate;
   }
   covered_.assign(tracks_.size(), 1);
   suspended_at_gate_.clear();

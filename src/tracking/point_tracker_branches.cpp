@@ -186,17 +186,19 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
       manoeuvre);
 }
 
-std::pair<Eigen::Vector3d, double> PointTracker::manoeuvre_reach(const ImmEstimate& prior,
-                                                                 const PlotScan& scan) const {
+PointTracker::Sphere PointTracker::manoeuvre_reach(const ImmEstimate& prior, const PlotScan& scan,
+                                                   std::vector<Sphere>* modes) const {
   const ImmEstimate mid = manoeuvre_prediction(prior, std::max(batch_mid_, prior.time));
   const Eigen::Vector3d centre = position_of(manoeuvre_->combine(mid).mean, layout_.dims);
-  // The manoeuvre gate is the union of its models' gates: cover every model's centre.
+  // The manoeuvre gate is the union of its models' gates: cover every model's region.
+  if (modes != nullptr) modes->clear();
   double radius = 0.0;
   for (const Gaussian& mode : mid.modes) {
-    const double offset = (position_of(mode.mean, layout_.dims) - centre).norm();
-    radius = std::max(
-        radius,
-        offset + search_radius(mode, centre, manoeuvre_threshold_[kMaxMeasurementDim], scan));
+    const Eigen::Vector3d at = position_of(mode.mean, layout_.dims);
+    const double reach =
+        search_radius(mode, centre, manoeuvre_threshold_[kMaxMeasurementDim], scan);
+    radius = std::max(radius, (at - centre).norm() + reach);
+    if (modes != nullptr) modes->push_back({at, reach});
   }
   return {centre, radius};
 }
@@ -206,9 +208,16 @@ void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) 
   // The manoeuvre models run from the track's estimate before this batch (a father is
   // updated by now), over the whole interval to the plot.
   const ImmEstimate& prior = previous_[static_cast<std::size_t>(t)];
-  const auto [centre, radius] = manoeuvre_reach(prior, scan);
+  const auto [centre, radius] = manoeuvre_reach(prior, scan, &mode_reach_);
   if (covered_[t] == 0 && !covers_region(scan, centre, radius)) return;
   index_.within(centre, radius, neighbours_);
+  // The models' regions can lie far apart (turns either way): only plots inside one of them
+  // are worth an innovation.
+  std::erase_if(neighbours_, [&](int j) {
+    return std::none_of(mode_reach_.begin(), mode_reach_.end(), [&](const Sphere& m) {
+      return (positions_[j] - m.centre).squaredNorm() <= m.radius * m.radius;
+    });
+  });
   if (neighbours_.empty()) return;
   const double time = std::max(nearest_time(centre), prior.time);
   const ImmEstimate predicted = manoeuvre_prediction(prior, time);
@@ -463,8 +472,7 @@ void PointTracker::find_lost_fathers(const PlotScan& scan) {
         !tree_.can_branch(father.id, profile_.branching.max_children)) {
       continue;
     }
-    const auto [centre, radius] = manoeuvre_reach(previous_[f], scan);
-    lost_fathers_.push_back({static_cast<int>(f), centre, radius});
+    lost_fathers_.push_back({static_cast<int>(f), manoeuvre_reach(previous_[f], scan, nullptr)});
   }
 }
 
@@ -476,7 +484,7 @@ int PointTracker::lost_father_of(const Initiation& initiation) const {
   int best = -1;
   double best_nis = manoeuvre_threshold_[plot.model.size()];
   for (const LostFather& lost : lost_fathers_) {
-    if ((position - lost.centre).norm() > lost.radius) continue;
+    if ((position - lost.reach.centre).norm() > lost.reach.radius) continue;
     const ImmEstimate& prior = previous_[static_cast<std::size_t>(lost.track)];
     const PlotHypothesis h = manoeuvre_->hypothesise(manoeuvre_prediction(prior, plot.time), plot);
     if (h.usable && h.min_nis <= best_nis) {

@@ -23,7 +23,6 @@
 #include <span>
 #include <string>
 #include <unordered_map>
-#include <utility>
 #include <vector>
 
 #include "skytrack/association/cluster_builder.hpp"
@@ -153,10 +152,14 @@ class PointTracker {
   /// Manoeuvre candidates of track t; with `for_update` (grandsons) also its IMM hypotheses
   /// and its prediction at the nearest candidate's time.
   void gate_manoeuvre(const PlotScan& scan, int t, bool for_update);
-  /// Centre and radius of the region holding the manoeuvre gate started from `prior`, at the
-  /// batch's middle.
-  std::pair<Eigen::Vector3d, double> manoeuvre_reach(const ImmEstimate& prior,
-                                                     const PlotScan& scan) const;
+  struct Sphere {
+    Eigen::Vector3d centre;
+    double radius = 0.0;
+  };
+  /// The region holding the manoeuvre gate started from `prior`, at the batch's middle; with
+  /// `modes`, also each manoeuvre model's own region.
+  Sphere manoeuvre_reach(const ImmEstimate& prior, const PlotScan& scan,
+                         std::vector<Sphere>* modes) const;
   /// JPDA over one pair kind (§2.1 (3)); collects its valid pairs, updates fathers.
   void solve_kind(PairKind kind, ScanReport& report, TrackFrame& frame);
   /// update_track for a father; a firm father its life deletes becomes doomed instead.
@@ -229,10 +232,10 @@ class PointTracker {
   std::vector<ImmEstimate> previous_;   // per track, before this batch (branching)
   struct LostFather {  // a suspended father and its manoeuvre gate's reach this batch
     int track = 0;
-    Eigen::Vector3d centre;
-    double radius = 0.0;
+    Sphere reach;
   };
   std::vector<LostFather> lost_fathers_;
+  std::vector<Sphere> mode_reach_;               // gate_manoeuvre's models' regions
   std::vector<Candidate> candidates_;            // non-manoeuvre gates
   std::vector<Candidate> manoeuvre_candidates_;  // manoeuvre gates (branching)
   std::vector<int> kind_list_;
