@@ -193,8 +193,8 @@ double PointTracker::plot_spread_at(const Eigen::Vector3d& position, const PlotS
   const MeasurementSigma& s = scan.sigma;
   const bool height = layout_.dims == 3;
   const double range = (position - scan.platform.position).norm();
-  const double angle = std::max(s.azimuth.value_or(d.azimuth),
-                                height ? s.elevation.value_or(d.elevation) : 0.0);
+  const double angle =
+      std::max(s.azimuth.value_or(d.azimuth), height ? s.elevation.value_or(d.elevation) : 0.0);
   const double polar = std::max(s.range.value_or(d.range), range * angle);
   const double cartesian =
       std::max({s.x.value_or(d.x), s.y.value_or(d.y), height ? s.z.value_or(d.z) : 0.0});
