@@ -230,7 +230,12 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   suspended_at_gate_.clear();
   const double widest = gate_threshold_[kMaxMeasurementDim];
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
-    const ImmEstimate& estimate = tracks_[t].estimate;
+    PointTrack& track = tracks_[t];
+    if (track.undecided && tree_.branch_count(track.id) == 0) {  // its sons are gone
+      track.doomed.reset();
+      track.undecided = false;
+    }
+    const ImmEstimate& estimate = track.estimate;
     const Gaussian mid =
         filter_.combine(filter_.predict(estimate, std::max(batch_mid, estimate.time)));
     const Eigen::Vector3d centre = position_of(mid.mean, layout_.dims);
@@ -604,8 +609,9 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
       continue;
     }
     if (track.replaced) continue;  // its number lives on in the branch that replaced it
-    // A doomed father is not reported while it waits for a branch to replace it.
-    if (track.doomed && track.life.status != TrackStatus::kDeleted) continue;
+    // A doomed father is not reported while it waits for a branch to replace it (an
+    // undecided one is).
+    if (track.doomed && !track.undecided && track.life.status != TrackStatus::kDeleted) continue;
     const ImmEstimate at_time =
         track.estimate.time < time ? filter_.predict(track.estimate, time) : track.estimate;
     const Gaussian g = filter_.combine(at_time);

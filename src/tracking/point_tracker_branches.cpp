@@ -76,6 +76,21 @@ double log_of(double p) {
   return std::log(std::max(p, 1e-300));
 }
 
+// True when the second likeliest plot above the miss weight has at least `tau`.
+bool ambiguous(std::span<const double> beta, double miss, double tau) {
+  double first = 0.0, second = 0.0;
+  for (const double b : beta) {
+    if (b <= miss) continue;
+    if (b > first) {
+      second = first;
+      first = b;
+    } else if (b > second) {
+      second = b;
+    }
+  }
+  return second >= tau;
+}
+
 }  // namespace
 
 bool PointTracker::may_start_sons(const PointTrack& father) const {
@@ -155,15 +170,25 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
       [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
         if (tracks_[t].branch != type) return;
         const bool was_doomed = tracks_[t].doomed.has_value();
+        // Two plots each likely enough: one frame cannot decide (§0), the sons will.
+        const bool split = kind == PairKind::kFatherNonManoeuvre && !was_doomed &&
+                           may_start_sons(tracks_[t]) &&
+                           ambiguous(beta, miss, profile_.branching.ambiguity_beta);
         if (kind == PairKind::kFatherNonManoeuvre) update_father(t, mine, beta, miss, frame);
         // A doomed father takes no non-manoeuvre pair but may start sons, so that a
         // branch can still keep its number.
         const PointTrack& track = tracks_[t];
         if (track.life.status == TrackStatus::kDeleted) return;
+        if (split && !track.doomed && may_start_sons(track)) {
+          tracks_[t].doomed = batches_;
+          tracks_[t].undecided = true;
+          add_event(frame, "undecided", track.id,
+                    "two plots above ambiguity_beta: the sons from its plots decide");
+        }
         if (kind == PairKind::kFatherNonManoeuvre && !was_doomed && track.doomed &&
             may_start_sons(track)) {
-          // Suspended by this very update: the plots its IMM-JPDA found likely (its turn
-          // modes included) start its sons, as its manoeuvre pairs do.
+          // Suspended (or undecided) by this very update: the plots its IMM-JPDA found
+          // likely (its turn modes included) start its sons, as its manoeuvre pairs do.
           for (std::size_t k = 0; k < mine.size(); ++k) {
             if (beta[k] <= miss) continue;
             branch_pairs_.push_back(

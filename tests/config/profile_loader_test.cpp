@@ -298,6 +298,8 @@ namespace {
 TEST(ProfileLoader, ManoeuvreAccelerationMustBePositive) {
   EXPECT_THAT(error_of("branching:\n  manoeuvre_accel_sigma: 0\n"),
               ::testing::HasSubstr("branching.manoeuvre_accel_sigma"));
+  EXPECT_THAT(error_of("branching:\n  ambiguity_beta: 0\n"),
+              ::testing::HasSubstr("branching.ambiguity_beta"));
   const auto profile = parse_profile(
       "profile: {name: p, version: '1'}\nbranching: {manoeuvre_accel_sigma: 35.5}\n", "p.yaml");
   ASSERT_TRUE(profile) << profile.error().message;

@@ -373,6 +373,51 @@ TEST(BranchTracker, FatherSuspendedByItsUpdateStartsSonsFromItsLikelyPlots) {
   EXPECT_NEAR(s.track(1)->position.y(), 60.0, 30.0);
 }
 
+TEST(BranchTracker, AmbiguousUpdateLetsTheSonsFromItsPlotsDecideWhileTheFatherIsReported) {
+  // GIVEN ambiguity_beta 0.3 and two plots 60 m apart, each about half of track 1's weight
+  config::TrackingProfile profile = branch_profile();
+  profile.branching.ambiguity_beta = 0.3;
+  Script s(profile);
+  s.start();
+  s.scan(4, {{400.0, 30.0}, {400.0, -30.0}});
+  // THEN the father is undecided (still reported) and each plot starts a son
+  EXPECT_EQ(s.events("undecided").size(), 1u);
+  EXPECT_TRUE(s.events("suspended").empty());
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_EQ(s.events("branch_created"),
+            (std::vector<std::string>{"1: son 2 of track 1 from plot 401",
+                                      "1: son 3 of track 1 from plot 402"}));
+  // WHEN the next plot continues the upper one, THEN that son replaces the father under
+  // number 1 and the other is pruned (no non-manoeuvre update since its birth, rule 5)
+  s.scan(5, {{500.0, 60.0}});
+  EXPECT_FALSE(s.associated(1, 501));  // the undecided father takes no non-manoeuvre pair
+  EXPECT_EQ(s.events("branch_promoted"),
+            (std::vector<std::string>{
+                "1: son 2 of track 1 replaces track 1: confirmed with plot 501 (rule 10)"}));
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_NEAR(s.track(1)->position.y(), 60.0, 30.0);
+  EXPECT_EQ(s.live_branches(), 0);
+}
+
+TEST(BranchTracker, UndecidedFatherWhoseSonsAreGoneTakesPlotsAgain) {
+  // GIVEN track 1 undecided between two plots (as above)
+  config::TrackingProfile profile = branch_profile();
+  profile.branching.ambiguity_beta = 0.3;
+  Script s(profile);
+  s.start();
+  s.scan(4, {{400.0, 30.0}, {400.0, -30.0}});
+  ASSERT_EQ(s.live_branches(), 2);
+  // WHEN neither son gets a plot until their track life ends them
+  for (int t = 5; t <= 8 && s.live_branches() > 0; ++t) s.scan(t, {});
+  ASSERT_EQ(s.live_branches(), 0);
+  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  // THEN the father is a plain father again and takes the target's plot
+  const double t = s.frame.time + 1.0;
+  s.scan(t, {{100.0 * t, 0.0}});
+  EXPECT_TRUE(s.associated(1, static_cast<std::int64_t>(100 * t) + 1));
+  EXPECT_EQ(s.frame.tracks[0].status, TrackStatus::kConfirmed);
+}
+
 TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
   config::TrackingProfile profile = branch_profile();
   profile.track_life.delete_position_sigma = 12.0;

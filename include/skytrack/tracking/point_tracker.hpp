@@ -79,6 +79,9 @@ struct PointTrack {
   // delete_confirmed_misses, and is deleted (and reported so) once it has no branches left
   // after that. A branch that replaces it brings its number back. The batch it happened in.
   std::optional<std::uint64_t> doomed;
+  // Doomed by an ambiguous association (branching.ambiguity_beta): still reported while the
+  // sons from its plots decide; back to a plain father if none is left.
+  bool undecided = false;
 };
 
 class PointTracker {
