@@ -572,10 +572,7 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
   for (const Initiation& initiation : initiator_.step(batches_, scan.time, unused, covered)) {
     if (branching()) {
       const int father = lost_father_of(initiation);
-      if (father >= 0) {
-        start_chain_branch(father, initiation, report, frame);
-        continue;
-      }
+      if (father >= 0 && start_chain_branch(father, initiation, report, frame)) continue;
     }
     PointTrack track;
     track.id = next_id_++;

@@ -520,12 +520,12 @@ int PointTracker::lost_father_of(const Initiation& initiation) const {
   return best;
 }
 
-void PointTracker::start_chain_branch(int father, const Initiation& initiation, ScanReport& report,
+bool PointTracker::start_chain_branch(int father, const Initiation& initiation, ScanReport& report,
                                       TrackFrame& frame) {
   const std::int64_t father_id = tracks_[father].id;
   const double score = tracks_[father].score;
   const PlotMeasurement& plot = initiation.plots.back();
-  if (!make_room(father_id, father_id, score, plot.plot_id, report, frame)) return;
+  if (!make_room(father_id, father_id, score, plot.plot_id, report, frame)) return false;
   PointTrack branch;
   branch.id = next_id_++;
   branch.branch = BranchType::kSon;
@@ -549,6 +549,7 @@ void PointTracker::start_chain_branch(int father, const Initiation& initiation, 
   ++report.branches_created;
   slots_[branch.id] = static_cast<int>(tracks_.size());
   tracks_.push_back(std::move(branch));
+  return true;
 }
 
 void PointTracker::apply(std::span<const BranchChange> changes, const std::string& reason,

@@ -189,8 +189,9 @@ class PointTracker {
   void find_lost_fathers(const PlotScan& scan);
   /// The suspended father in whose manoeuvre gate a new plot chain ends (§3.3), or -1.
   int lost_father_of(const Initiation& initiation) const;
-  /// Starts the chain as a son of `father` instead of a new father.
-  void start_chain_branch(int father, const Initiation& initiation, ScanReport& report,
+  /// Starts the chain as a son of `father` instead of a new father; false when the branch
+  /// caps leave no room (the chain then starts a new father).
+  bool start_chain_branch(int father, const Initiation& initiation, ScanReport& report,
                           TrackFrame& frame);
   void apply(std::span<const BranchChange> changes, const std::string& reason, ScanReport& report,
              TrackFrame& frame);
