@@ -224,7 +224,16 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   if (branching()) {  // the manoeuvre gates start from the estimates before this batch
     // Assigned in place: the slots keep their storage from batch to batch.
     previous_.resize(tracks_.size());
-    for (std::size_t t = 0; t < tracks_.size(); ++t) previous_[t] = tracks_[t].estimate;
+    has_previous_.assign(tracks_.size(), 0);
+    // Only tracks that may get a manoeuvre gate or start sons need it: firm fathers and
+    // branches (most tracks in heavy clutter are tentative fathers).
+    for (std::size_t t = 0; t < tracks_.size(); ++t) {
+      const PointTrack& track = tracks_[t];
+      if (track.branch != BranchType::kFather || is_reported_as_firm(track.life.status)) {
+        previous_[t] = track.estimate;
+        has_previous_[t] = 1;
+      }
+    }
   }
   covered_.assign(tracks_.size(), 1);
   suspended_at_gate_.clear();
@@ -435,7 +444,10 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
                    profile_.track_life);
   const double spread = mode_spread(track.estimate, layout_.dims);
   const LifeChange change = advance_life(track.life, detection > 0.5, spread, profile_.track_life);
-  if (change.confirmed) add_event(frame, "confirmed", track.id, "");
+  if (change.confirmed) {
+    add_event(frame, "confirmed", track.id, "");
+    if (branching()) confirmed_now_.push_back(t);
+  }
   if (change.started_coasting) add_event(frame, "coasting", track.id, "");
   if (change.deleted) add_event(frame, "deleted", track.id, "");
 }
@@ -568,10 +580,13 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     if (free_for_initiation(j)) unused.push_back(plots_[j]);
   }
   const auto covered = [&](const Eigen::Vector3d& p) { return covers(scan, p); };
-  if (branching()) find_lost_fathers(scan);
+  if (branching()) {
+    find_lost_fathers(scan);
+    continue_lost_fathers(report, frame);
+  }
   for (const Initiation& initiation : initiator_.step(batches_, scan.time, unused, covered)) {
     if (branching()) {
-      const int father = lost_father_of(initiation);
+      const int father = lost_father_of(initiation.plots.back());
       if (father >= 0 && start_chain_branch(father, initiation, report, frame)) continue;
     }
     PointTrack track;

@@ -93,6 +93,16 @@ bool ambiguous(std::span<const double> beta, double miss, double tau) {
 
 }  // namespace
 
+const config::TrackLifeSpec& PointTracker::life_of(const PointTrack& branch) const {
+  return branch.from_chain ? profile_.track_life : branch_life_;
+}
+
+int PointTracker::recovery_misses() const {
+  // A suspended father waits, unreported, for initiation.n more scans after it may no longer
+  // branch: the time a plot chain of its target needs to form and confirm (§3.3).
+  return profile_.track_life.delete_confirmed_misses + profile_.initiation.n;
+}
+
 bool PointTracker::may_start_sons(const PointTrack& father) const {
   return is_reported_as_firm(father.life.status) &&
          (!father.doomed ||
@@ -141,7 +151,9 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   }
   for (std::size_t t = 0; t < n; ++t) {
     const PointTrack& track = tracks_[t];
-    if (taken[t] != 0 || track.life.status == TrackStatus::kDeleted) continue;
+    if (taken[t] != 0 || track.life.status == TrackStatus::kDeleted || has_previous_[t] == 0) {
+      continue;
+    }
     if (track.branch == BranchType::kFather && !may_start_sons(track)) continue;
     gate_manoeuvre(scan, static_cast<int>(t), track.branch == BranchType::kGrandson);
   }
@@ -344,7 +356,11 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   // Rule 10: every branch update is followed by the confirmation test. A branch that took
   // its pair is not deleted for its spread: the PDA posterior of a wide prior (a son started
   // after misses) stays wide for a scan; misses end it (age_branches).
-  if (advance_life(branch.life, true, 0.0, branch_life_).confirmed) {
+  if (branch.from_chain) {
+    update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
+                     profile_.association.gate_probability, profile_.track_life);
+  }
+  if (advance_life(branch.life, true, 0.0, life_of(branch)).confirmed) {
     changes_.clear();
     tree_.promote(number, changes_);
     apply(changes_, "confirmed with plot " + plot + " (rule 10)", report, frame);
@@ -465,7 +481,11 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
     branch.estimate = filter_.predict(branch.estimate, std::max(frame.time, branch.estimate.time));
     branch.score += miss;
     const double spread = mode_spread(branch.estimate, layout_.dims);
-    if (advance_life(branch.life, false, spread, branch_life_).deleted) {
+    if (branch.from_chain) {
+      update_existence(branch.life, 0.0, profile_.association.detection_probability,
+                       profile_.association.gate_probability, profile_.track_life);
+    }
+    if (advance_life(branch.life, false, spread, life_of(branch)).deleted) {
       changes_.clear();
       tree_.remove(branch.id, changes_);
       apply(changes_, "no plot", report, frame);
@@ -478,7 +498,7 @@ void PointTracker::retire_doomed_fathers(TrackFrame& frame) {
   for (PointTrack& father : tracks_) {
     if (father.branch != BranchType::kFather || father.replaced || !father.doomed ||
         father.life.status == TrackStatus::kDeleted || tree_.branch_count(father.id) > 0 ||
-        may_start_sons(father)) {
+        may_start_sons(father) || father.life.consecutive_misses < recovery_misses()) {
       continue;
     }
     father.life.status = TrackStatus::kDeleted;
@@ -488,28 +508,55 @@ void PointTracker::retire_doomed_fathers(TrackFrame& frame) {
   }
 }
 
+bool PointTracker::room_for_chain(std::int64_t father, double existence, std::int64_t plot_id,
+                                  ScanReport& report, TrackFrame& frame) {
+  const int max_children = profile_.branching.max_children;
+  if (tree_.can_branch(father, max_children)) return true;
+  // No room: the chain displaces the father's least likely chain son (lowest existence),
+  // if less likely than itself. Sons from manoeuvre pairs stay.
+  const BranchNode* node = tree_.find(father);
+  int least = -1;
+  for (const std::int64_t son : node->children) {
+    const int i = slot(son);
+    if (i < 0 || !tracks_[i].from_chain || is_reported_as_firm(tracks_[i].life.status)) continue;
+    if (least < 0 || tracks_[i].life.existence < tracks_[least].life.existence) least = i;
+  }
+  if (least < 0 || tracks_[least].life.existence >= existence) return false;
+  changes_.clear();
+  tree_.remove(tracks_[least].id, changes_);
+  apply(changes_,
+        "a likelier plot chain (plot " + std::to_string(plot_id) + ") at max_children " +
+            std::to_string(max_children),
+        report, frame);
+  return true;
+}
+
 void PointTracker::find_lost_fathers(const PlotScan& scan) {
   lost_fathers_.clear();
-  for (std::size_t f = 0; f < tracks_.size() && f < previous_.size(); ++f) {
+  for (std::size_t f = 0; f < tracks_.size() && f < has_previous_.size(); ++f) {
     const PointTrack& father = tracks_[f];
-    if (father.branch != BranchType::kFather || !father.doomed || father.replaced ||
-        father.life.status == TrackStatus::kDeleted ||
-        !tree_.can_branch(father.id, profile_.branching.max_children)) {
+    if (has_previous_[f] == 0) continue;
+    if (father.branch != BranchType::kFather || !father.doomed || father.undecided ||
+        father.replaced || father.life.status == TrackStatus::kDeleted) {
       continue;
     }
-    lost_fathers_.push_back({static_cast<int>(f), manoeuvre_reach(previous_[f], scan, nullptr)});
+    LostFather& lost = lost_fathers_.emplace_back();
+    lost.track = static_cast<int>(f);
+    lost.reach = manoeuvre_reach(previous_[f], scan, &lost.modes);
   }
 }
 
-int PointTracker::lost_father_of(const Initiation& initiation) const {
-  // §3.3: a plot-to-plot manoeuvre association starts a branch. A chain whose latest plot
-  // lies in the manoeuvre gate of a suspended father continues that father.
-  const PlotMeasurement& plot = initiation.plots.back();
+int PointTracker::lost_father_of(const PlotMeasurement& plot) const {
   const Eigen::Vector3d position = approximate_position(plot);
   int best = -1;
   double best_nis = manoeuvre_threshold_[plot.model.size()];
   for (const LostFather& lost : lost_fathers_) {
     if ((position - lost.reach.centre).norm() > lost.reach.radius) continue;
+    if (std::none_of(lost.modes.begin(), lost.modes.end(), [&](const Sphere& m) {
+          return (position - m.centre).squaredNorm() <= m.radius * m.radius;
+        })) {
+      continue;
+    }
     const ImmEstimate& prior = previous_[static_cast<std::size_t>(lost.track)];
     const PlotHypothesis h = manoeuvre_->hypothesise(manoeuvre_prediction(prior, plot.time), plot);
     if (h.usable && h.min_nis <= best_nis) {
@@ -520,17 +567,62 @@ int PointTracker::lost_father_of(const Initiation& initiation) const {
   return best;
 }
 
+void PointTracker::continue_lost_fathers(ScanReport& report, TrackFrame& frame) {
+  for (const int t : confirmed_now_) {
+    const PointTrack& track = tracks_[t];
+    if (track.branch != BranchType::kFather || track.life.status != TrackStatus::kConfirmed ||
+        track.doomed || !track.last_plot || track.last_plot_batch != batches_) {
+      continue;
+    }
+    const int f = lost_father_of(*track.last_plot);
+    if (f < 0) continue;
+    const std::int64_t father = tracks_[f].id, number = track.id;
+    const std::string why = name(BranchType::kFather, number) + " confirmed in its manoeuvre gate";
+    if (!tree_.can_branch(father, profile_.branching.max_children)) {
+      // The new track is likelier than any branch that has not confirmed: the least likely
+      // son makes room for it.
+      const BranchNode* node = tree_.find(father);
+      int least = -1;
+      for (const std::int64_t son : node->children) {
+        const int i = slot(son);
+        if (i >= 0 && (least < 0 || tracks_[i].score < tracks_[least].score)) least = i;
+      }
+      if (least < 0) continue;
+      changes_.clear();
+      tree_.remove(tracks_[least].id, changes_);
+      apply(changes_, why, report, frame);
+    }
+    // §3.3 and rule 10: the new track is the lost father's son, confirmed, so it replaces
+    // the father under the father's number; its own number never appeared as firm.
+    changes_.clear();
+    tree_.remove(number, changes_);
+    tree_.add_branch(number, father);
+    tracks_[t].branch = BranchType::kSon;
+    changes_.clear();
+    tree_.promote(number, changes_);
+    std::erase_if(frame.events,
+                  [&](const TrackEvent& e) { return e.type == "confirmed" && e.track == number; });
+    apply(changes_, why + " (§3.3)", report, frame);
+  }
+  confirmed_now_.clear();
+}
+
 bool PointTracker::start_chain_branch(int father, const Initiation& initiation, ScanReport& report,
                                       TrackFrame& frame) {
   const std::int64_t father_id = tracks_[father].id;
   const double score = tracks_[father].score;
   const PlotMeasurement& plot = initiation.plots.back();
-  if (!make_room(father_id, father_id, score, plot.plot_id, report, frame)) return false;
   PointTrack branch;
+  branch.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
+  branch.life.existence = profile_.track_life.initial_existence;
+  branch.estimate = start_estimate(initiation, branch.life);
+  if (!room_for_chain(father_id, branch.life.existence, plot.plot_id, report, frame) ||
+      !make_room(father_id, father_id, score, plot.plot_id, report, frame)) {
+    return false;
+  }
   branch.id = next_id_++;
   branch.branch = BranchType::kSon;
-  branch.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
-  branch.estimate = start_estimate(initiation, branch.life);
+  branch.from_chain = true;
   branch.quality = tracks_[father].quality;
   branch.first_plot = initiation.plots.front();
   branch.first_plot_batch = batches_ + 1 - static_cast<std::uint64_t>(initiation.scans);

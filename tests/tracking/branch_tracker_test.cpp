@@ -426,14 +426,15 @@ TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
   s.scan(4, {});  // suspended, no plot to branch from
   EXPECT_EQ(s.events("suspended").size(), 1u);
   EXPECT_TRUE(s.reported().empty());
-  // THEN it is deleted (and reported so, once) when its misses reach
-  // delete_confirmed_misses without a branch
+  // THEN its branching ends when its misses reach delete_confirmed_misses, and it is deleted
+  // (and reported so, once) initiation.n scans later, the time a plot chain of its target
+  // needs to form and confirm (§3.3), without a branch
   int deleted_at = 0;
-  for (int t = 5; t <= 12 && deleted_at == 0; ++t) {
+  for (int t = 5; t <= 20 && deleted_at == 0; ++t) {
     s.scan(t, {});
     if (!s.events("deleted").empty()) deleted_at = t;
   }
-  EXPECT_EQ(deleted_at, 3 + profile.track_life.delete_confirmed_misses);
+  EXPECT_EQ(deleted_at, 3 + profile.track_life.delete_confirmed_misses + profile.initiation.n);
   ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_EQ(s.frame.tracks[0].status, TrackStatus::kDeleted);
 }
@@ -483,10 +484,49 @@ TEST(BranchTracker, ChainOutsideTheManoeuvreGateOfASuspendedFatherIsANewTrack) {
   s.scan(6, {{600.0, 1000.0}});
   s.scan(7, {});
   s.scan(8, {{800.0, 1000.0}});
-  // THEN it is initiated as track 2 and the father, with no branch, is deleted
+  // THEN it is initiated as track 2, and the father, with no branch, waits unreported
   EXPECT_TRUE(s.events("branch_created").empty());
   EXPECT_EQ(s.events("initiated"), (std::vector<std::string>{"2: from plots 501 601 801"}));
-  EXPECT_EQ(s.events("deleted"), (std::vector<std::string>{"1: no branch left to replace it"}));
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{2}));
+  // AND track 2, confirmed far from the father's manoeuvre gate, keeps its own number
+  s.scan(9, {{900.0, 1000.0}});
+  EXPECT_EQ(s.events("confirmed"), (std::vector<std::string>{"2: "}));
+  EXPECT_TRUE(s.events("branch_promoted").empty());
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{2}));
+}
+
+TEST(BranchTracker, NewTrackConfirmedInTheManoeuvreGateOfASuspendedFatherTakesItsNumber) {
+  // GIVEN track 1 suspended by a miss at t = 4 (spread limit 12 m), and its target coming
+  // back towards its line at 300 m/s: the plot chain of t = 5, 6, 7 ends 400 m off the
+  // father's prediction, outside its manoeuvre gate, so it starts track 2
+  config::TrackingProfile profile = branch_profile();
+  profile.track_life.delete_position_sigma = 12.0;
+  Script s(profile);
+  s.start();
+  s.scan(4, {});
+  s.scan(5, {{500.0, 1000.0}});
+  s.scan(6, {{600.0, 700.0}});
+  s.scan(7, {{700.0, 400.0}});
+  ASSERT_EQ(s.events("initiated"), (std::vector<std::string>{"2: from plots 501 601 701"}));
+  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{2}));
+  ASSERT_EQ(s.frame.tracks[0].status, TrackStatus::kTentative);
+  // WHEN track 2 is confirmed on a plot 100 m off the father's prediction, inside its
+  // manoeuvre gate
+  s.scan(8, {{800.0, 100.0}});
+  // THEN it is the father's son, confirmed, and replaces it under number 1 (§3.3, rule 10):
+  // number 2 is never reported as a firm track
+  EXPECT_EQ(s.events("branch_promoted"),
+            (std::vector<std::string>{"1: son 2 of track 1 replaces track 1: track 2 confirmed "
+                                      "in its manoeuvre gate (§3.3)"}));
+  EXPECT_TRUE(s.events("confirmed").empty());
+  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_EQ(s.frame.tracks[0].status, TrackStatus::kConfirmed);
+  EXPECT_NEAR(s.track(1)->position.y(), 100.0, 30.0);
+  EXPECT_NEAR(s.track(1)->velocity.y(), -300.0, 30.0);
+  // AND it goes on as track 1
+  s.scan(9, {{900.0, -200.0}});
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  EXPECT_TRUE(s.associated(1, 901));
 }
 
 TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {

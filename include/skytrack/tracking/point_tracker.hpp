@@ -82,6 +82,9 @@ struct PointTrack {
   // Doomed by an ambiguous association (branching.ambiguity_beta): still reported while the
   // sons from its plots decide; back to a plain father if none is left.
   bool undecided = false;
+  // A son started from a plot chain (§3.3): confirmed on its existence, as the same chain
+  // would be as a new track, not on plot counts.
+  bool from_chain = false;
 };
 
 class PointTracker {
@@ -165,12 +168,16 @@ class PointTracker {
                          std::vector<Sphere>* modes) const;
   /// JPDA over one pair kind (§2.1 (3)); collects its valid pairs, updates fathers.
   void solve_kind(PairKind kind, ScanReport& report, TrackFrame& frame);
-  /// update_track for a father; a firm father its life deletes becomes doomed instead.
+  /// The life rules of a branch: a chain-started son's are a new track's (existence).
+  const config::TrackLifeSpec& life_of(const PointTrack& branch) const;
+  /// A firm father not yet doomed, or doomed with fewer than delete_confirmed_misses misses.
   bool may_start_sons(const PointTrack& father) const;
+  int recovery_misses() const;
   /// A firm, not yet doomed father whose prediction `mid` is already wider than
   /// delete_position_sigma: its non-manoeuvre gate would take clutter and cut the branch
   /// that follows the target, so it is suspended before gating.
   bool suspends_before_gating(const PointTrack& track, const Gaussian& mid) const;
+  /// update_track for a father; a firm father its life deletes becomes doomed instead.
   void update_father(int t, std::span<const int> candidates, std::span<const double> beta_plots,
                      double beta_miss, TrackFrame& frame);
   void confirm_branch_pairs(ScanReport& report, TrackFrame& frame);
@@ -187,8 +194,16 @@ class PointTracker {
   void retire_doomed_fathers(TrackFrame& frame);
   /// Collects the suspended fathers that may still branch, with their manoeuvre gates' reach.
   void find_lost_fathers(const PlotScan& scan);
-  /// The suspended father in whose manoeuvre gate a new plot chain ends (§3.3), or -1.
-  int lost_father_of(const Initiation& initiation) const;
+  /// Room under max_children for a chain son of `father` whose existence is `existence`:
+  /// displaces the least likely chain son if need be; false if there is none less likely.
+  bool room_for_chain(std::int64_t father, double existence, std::int64_t plot_id,
+                      ScanReport& report, TrackFrame& frame);
+  /// The suspended father in whose manoeuvre gate `plot` lies (the nearest), or -1.
+  int lost_father_of(const PlotMeasurement& plot) const;
+  /// §3.3 for chains that completed before their target's father was suspended: a father
+  /// confirmed in this batch whose plot lies in a suspended father's manoeuvre gate
+  /// replaces it under its number.
+  void continue_lost_fathers(ScanReport& report, TrackFrame& frame);
   /// Starts the chain as a son of `father` instead of a new father; false when the branch
   /// caps leave no room (the chain then starts a new father).
   bool start_chain_branch(int father, const Initiation& initiation, ScanReport& report,
@@ -230,15 +245,18 @@ class PointTracker {
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> rejected_;
   std::vector<std::uint8_t> gated_;
-  std::vector<std::uint8_t> covered_;   // per track: inside this batch's coverage
-  std::vector<int> suspended_at_gate_;  // fathers suspended on their prediction
-  std::vector<ImmEstimate> predicted_;  // per track, at its update time
-  std::vector<ImmEstimate> previous_;   // per track, before this batch (branching)
+  std::vector<std::uint8_t> covered_;       // per track: inside this batch's coverage
+  std::vector<int> suspended_at_gate_;      // fathers suspended on their prediction
+  std::vector<ImmEstimate> predicted_;      // per track, at its update time
+  std::vector<ImmEstimate> previous_;       // per track, before this batch (branching)
+  std::vector<std::uint8_t> has_previous_;  // previous_ holds this batch's prior
   struct LostFather {  // a suspended father and its manoeuvre gate's reach this batch
     int track = 0;
     Sphere reach;
+    std::vector<Sphere> modes;  // each manoeuvre model's region (reach is their union's)
   };
   std::vector<LostFather> lost_fathers_;
+  std::vector<int> confirmed_now_;               // fathers confirmed in this batch (branching only)
   std::vector<Sphere> mode_reach_;               // gate_manoeuvre's models' regions
   std::vector<Candidate> candidates_;            // non-manoeuvre gates
   std::vector<Candidate> manoeuvre_candidates_;  // manoeuvre gates (branching)
