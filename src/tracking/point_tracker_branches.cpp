@@ -224,8 +224,9 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
 }
 
 PointTracker::Sphere PointTracker::manoeuvre_reach(const ImmEstimate& prior, const PlotScan& scan,
-                                                   std::vector<Sphere>* modes) const {
-  const ImmEstimate mid = manoeuvre_prediction(prior, std::max(batch_mid_, prior.time));
+                                                   std::vector<Sphere>* modes,
+                                                   ImmEstimate* mid_out) const {
+  ImmEstimate mid = manoeuvre_prediction(prior, std::max(batch_mid_, prior.time));
   const Eigen::Vector3d centre = position_of(manoeuvre_->combine(mid).mean, layout_.dims);
   // The manoeuvre gate is the union of its models' gates: cover every model's region.
   if (modes != nullptr) modes->clear();
@@ -237,6 +238,7 @@ PointTracker::Sphere PointTracker::manoeuvre_reach(const ImmEstimate& prior, con
     radius = std::max(radius, (at - centre).norm() + reach);
     if (modes != nullptr) modes->push_back({at, reach});
   }
+  if (mid_out != nullptr) *mid_out = std::move(mid);
   return {centre, radius};
 }
 
@@ -542,23 +544,27 @@ void PointTracker::find_lost_fathers(const PlotScan& scan) {
     }
     LostFather& lost = lost_fathers_.emplace_back();
     lost.track = static_cast<int>(f);
-    lost.reach = manoeuvre_reach(previous_[f], scan, &lost.modes);
+    lost.reach = manoeuvre_reach(previous_[f], scan, &lost.modes, &lost.predicted);
   }
 }
 
-int PointTracker::lost_father_of(const PlotMeasurement& plot) const {
+int PointTracker::lost_father_of(const PlotMeasurement& plot) {
   const Eigen::Vector3d position = approximate_position(plot);
   int best = -1;
   double best_nis = manoeuvre_threshold_[plot.model.size()];
-  for (const LostFather& lost : lost_fathers_) {
+  for (LostFather& lost : lost_fathers_) {
     if ((position - lost.reach.centre).norm() > lost.reach.radius) continue;
     if (std::none_of(lost.modes.begin(), lost.modes.end(), [&](const Sphere& m) {
           return (position - m.centre).squaredNorm() <= m.radius * m.radius;
         })) {
       continue;
     }
-    const ImmEstimate& prior = previous_[static_cast<std::size_t>(lost.track)];
-    const PlotHypothesis h = manoeuvre_->hypothesise(manoeuvre_prediction(prior, plot.time), plot);
+    // Plots of one batch often share a time (a snapshot scan): predict once per time.
+    if (lost.predicted.modes.empty() || lost.predicted.time != plot.time) {
+      lost.predicted =
+          manoeuvre_prediction(previous_[static_cast<std::size_t>(lost.track)], plot.time);
+    }
+    const PlotHypothesis h = manoeuvre_->hypothesise(lost.predicted, plot);
     if (h.usable && h.min_nis <= best_nis) {
       best_nis = h.min_nis;
       best = lost.track;

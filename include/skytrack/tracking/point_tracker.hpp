@@ -164,8 +164,8 @@ class PointTracker {
   };
   /// The region holding the manoeuvre gate started from `prior`, at the batch's middle; with
   /// `modes`, also each manoeuvre model's own region.
-  Sphere manoeuvre_reach(const ImmEstimate& prior, const PlotScan& scan,
-                         std::vector<Sphere>* modes) const;
+  Sphere manoeuvre_reach(const ImmEstimate& prior, const PlotScan& scan, std::vector<Sphere>* modes,
+                         ImmEstimate* mid = nullptr) const;
   /// JPDA over one pair kind (§2.1 (3)); collects its valid pairs, updates fathers.
   void solve_kind(PairKind kind, ScanReport& report, TrackFrame& frame);
   /// The life rules of a branch: a chain-started son's are a new track's (existence).
@@ -199,7 +199,7 @@ class PointTracker {
   bool room_for_chain(std::int64_t father, double existence, std::int64_t plot_id,
                       ScanReport& report, TrackFrame& frame);
   /// The suspended father in whose manoeuvre gate `plot` lies (the nearest), or -1.
-  int lost_father_of(const PlotMeasurement& plot) const;
+  int lost_father_of(const PlotMeasurement& plot);
   /// §3.3 for chains that completed before their target's father was suspended: a father
   /// confirmed in this batch whose plot lies in a suspended father's manoeuvre gate
   /// replaces it under its number.
@@ -254,6 +254,7 @@ class PointTracker {
     int track = 0;
     Sphere reach;
     std::vector<Sphere> modes;  // each manoeuvre model's region (reach is their union's)
+    ImmEstimate predicted;      // its manoeuvre prediction to the last plot time asked for
   };
   std::vector<LostFather> lost_fathers_;
   std::vector<int> confirmed_now_;               // fathers confirmed in this batch (branching only)
