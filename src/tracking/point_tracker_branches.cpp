@@ -22,6 +22,7 @@
 // fathers branch once confirmed ("stably tracked", §0); a tentative father is plain IMM-JPDA.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "point_tracker_support.hpp"
@@ -138,7 +139,10 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
               "branch may replace it");
   }
   // §2.1 (1), (3): the non-manoeuvre kinds; the fathers' kind also updates the fathers.
+  claimed_by_.assign(plots_.size(), -1);
+  pending_splits_.clear();
   solve_kind(PairKind::kFatherNonManoeuvre, report, frame);
+  split_undecided_fathers(frame);
   solve_kind(PairKind::kSonNonManoeuvre, report, frame);
   // Their confirmation comes first in §2.2 and does not depend on the later kinds, so it
   // tells which tracks can still use a manoeuvre pair: fathers and sons without a confirmed
@@ -191,11 +195,18 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
         // branch can still keep its number.
         const PointTrack& track = tracks_[t];
         if (track.life.status == TrackStatus::kDeleted) return;
-        if (split && !track.doomed && may_start_sons(track)) {
-          tracks_[t].doomed = batches_;
-          tracks_[t].undecided = true;
-          add_event(frame, "undecided", track.id,
-                    "two plots above ambiguity_beta: the sons from its plots decide");
+        if (kind == PairKind::kFatherNonManoeuvre && !track.doomed) {
+          claim_best_plot(t, pool, mine, beta, miss);
+          // Decided once every father's likeliest plot is known (split_undecided_fathers).
+          if (split && may_start_sons(track)) {
+            PendingSplit& p = pending_splits_.emplace_back();
+            p.track = t;
+            p.miss = miss;
+            for (std::size_t k = 0; k < mine.size(); ++k) {
+              p.plots.push_back(pool[mine[k]].plot);
+              p.beta.push_back(beta[k]);
+            }
+          }
         }
         if (kind == PairKind::kFatherNonManoeuvre && !was_doomed && track.doomed &&
             may_start_sons(track)) {
@@ -271,6 +282,53 @@ void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) 
       if (!hypothesis.usable) continue;
     }
     manoeuvre_candidates_.push_back({t, j, std::move(hypothesis), m.likelihood});
+  }
+}
+
+void PointTracker::claim_best_plot(int t, const std::vector<Candidate>& pool,
+                                   std::span<const int> mine, std::span<const double> beta,
+                                   double miss) {
+  int best = -1;
+  double best_beta = miss;
+  for (std::size_t k = 0; k < mine.size(); ++k) {
+    if (beta[k] > best_beta) {
+      best_beta = beta[k];
+      best = pool[mine[k]].plot;
+    }
+  }
+  if (best < 0) return;
+  int& owner = claimed_by_[static_cast<std::size_t>(best)];
+  owner = owner == -1 ? t : -2;  // -2: the likeliest plot of several fathers
+}
+
+void PointTracker::split_undecided_fathers(TrackFrame& frame) {
+  const double tau = profile_.branching.ambiguity_beta;
+  for (const PendingSplit& p : pending_splits_) {
+    // A plot that is another father's likeliest is that father's target (a formation
+    // member), not a second hypothesis of this one.
+    const auto free = [&](std::size_t k) {
+      const int owner = claimed_by_[static_cast<std::size_t>(p.plots[k])];
+      return p.beta[k] > p.miss && (owner == -1 || owner == p.track);
+    };
+    int likely = 0;
+    for (std::size_t k = 0; k < p.plots.size(); ++k) {
+      if (free(k) && p.beta[k] >= tau) ++likely;
+    }
+    PointTrack& track = tracks_[p.track];
+    if (likely < 2 || track.doomed || track.life.status == TrackStatus::kDeleted) continue;
+    // Undecided: no non-manoeuvre pair; the plots its IMM-JPDA found likely start its sons.
+    std::erase_if(branch_pairs_, [&](const BranchPair& b) {
+      return b.kind == PairKind::kFatherNonManoeuvre && b.track == p.track;
+    });
+    track.doomed = batches_;
+    track.undecided = true;
+    add_event(frame, "undecided", track.id,
+              "two plots above ambiguity_beta: the sons from its plots decide");
+    for (std::size_t k = 0; k < p.plots.size(); ++k) {
+      if (free(k)) {
+        branch_pairs_.push_back({PairKind::kFatherManoeuvre, p.track, p.plots[k], p.beta[k], -1});
+      }
+    }
   }
 }
 

@@ -399,6 +399,26 @@ TEST(BranchTracker, AmbiguousUpdateLetsTheSonsFromItsPlotsDecideWhileTheFatherIs
   EXPECT_EQ(s.live_branches(), 0);
 }
 
+TEST(BranchTracker, AnotherTracksLikeliestPlotMakesNoAmbiguity) {
+  // GIVEN ambiguity_beta 0.3 and two targets 10 m apart flying east side by side (a
+  // formation): each track weighs both plots about half and half
+  config::TrackingProfile profile = branch_profile();
+  profile.branching.ambiguity_beta = 0.3;
+  Script s(profile);
+  int undecided = 0, sons = 0;
+  for (int t = 0; t <= 8; ++t) {
+    s.scan(t, {{100.0 * t, 5.0}, {100.0 * t, -5.0}});
+    undecided += static_cast<int>(s.events("undecided").size());
+    sons += static_cast<int>(s.events("branch_created").size());
+  }
+  // THEN the other plot of each track is the other track's likeliest: neither track is ever
+  // undecided, no son starts, and tracks 1 and 2 keep their numbers
+  EXPECT_EQ(undecided, 0);
+  EXPECT_EQ(sons, 0);
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1, 2}));
+  for (const TrackReport& t : s.frame.tracks) EXPECT_EQ(t.status, TrackStatus::kConfirmed);
+}
+
 TEST(BranchTracker, UndecidedFatherWhoseSonsAreGoneTakesPlotsAgain) {
   // GIVEN track 1 undecided between two plots (as above)
   config::TrackingProfile profile = branch_profile();

@@ -158,8 +158,9 @@ struct BranchingSpec {
   // accel_sigma if larger): the range of manoeuvres a target may start between two looks.
   double manoeuvre_accel_sigma = 20.0;
   // A firm father whose non-manoeuvre update weighs two plots each at least this much (and
-  // more than a miss) cannot decide in one frame: the plots start its sons, which decide,
-  // while it is still reported. 1: never (the father takes the likelier plot, rule 5).
+  // more than a miss), neither the likeliest plot of another father, cannot decide in one
+  // frame: the plots start its sons, which decide, while it is still reported. 1: never
+  // (the father takes the likelier plot, rule 5).
   double ambiguity_beta = 1.0;
   int max_branches_per_father = 12;  // sons + grandsons of one father (3 + 9 at 3 children)
   int max_total_branches = 2000;     // in the whole tracker: bounds time and memory

@@ -177,6 +177,12 @@ class PointTracker {
   /// delete_position_sigma: its non-manoeuvre gate would take clutter and cut the branch
   /// that follows the target, so it is suspended before gating.
   bool suspends_before_gating(const PointTrack& track, const Gaussian& mid) const;
+  /// Notes the likeliest plot of father `t`'s non-manoeuvre update in claimed_by_.
+  void claim_best_plot(int t, const std::vector<Candidate>& pool, std::span<const int> mine,
+                       std::span<const double> beta, double miss);
+  /// Makes undecided the fathers whose update weighed two plots above ambiguity_beta that
+  /// are no other father's likeliest plot.
+  void split_undecided_fathers(TrackFrame& frame);
   /// update_track for a father; a firm father its life deletes becomes doomed instead.
   void update_father(int t, std::span<const int> candidates, std::span<const double> beta_plots,
                      double beta_miss, TrackFrame& frame);
@@ -257,7 +263,15 @@ class PointTracker {
     ImmEstimate predicted;      // its manoeuvre prediction to the last plot time asked for
   };
   std::vector<LostFather> lost_fathers_;
-  std::vector<int> confirmed_now_;               // fathers confirmed in this batch (branching only)
+  std::vector<int> confirmed_now_;  // fathers confirmed in this batch (branching only)
+  struct PendingSplit {             // a father whose update weighed two plots above ambiguity_beta
+    int track = 0;
+    std::vector<int> plots;
+    std::vector<double> beta;
+    double miss = 0.0;
+  };
+  std::vector<PendingSplit> pending_splits_;
+  std::vector<int> claimed_by_;  // per plot: the father whose likeliest it is; -1 none, -2 several
   std::vector<Sphere> mode_reach_;               // gate_manoeuvre's models' regions
   std::vector<Candidate> candidates_;            // non-manoeuvre gates
   std::vector<Candidate> manoeuvre_candidates_;  // manoeuvre gates (branching)
