@@ -195,7 +195,9 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
         // branch can still keep its number.
         const PointTrack& track = tracks_[t];
         if (track.life.status == TrackStatus::kDeleted) return;
-        if (kind == PairKind::kFatherNonManoeuvre && !track.doomed) {
+        // Only an ambiguity test needs to know whose likeliest plot each plot is.
+        if (kind == PairKind::kFatherNonManoeuvre && !track.doomed &&
+            profile_.branching.ambiguity_beta < 1.0) {
           claim_best_plot(t, pool, mine, beta, miss);
           // Decided once every father's likeliest plot is known (split_undecided_fathers).
           if (split && may_start_sons(track)) {
