@@ -355,7 +355,26 @@ void PointTracker::update_father(int t, std::span<const int> candidates,
 void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
   const std::vector<BranchPair> confirmed = confirm_pairs(
       branch_pairs_, static_cast<int>(tracks_.size()), static_cast<int>(plots_.size()));
+  bool sons_marked = false, sons_promoted = false;
+  confirmed_sons_.clear();
   for (const BranchPair& pair : confirmed) {
+    if (pair.kind == PairKind::kSonNonManoeuvre && !sons_marked) {
+      // The fathers' pairs (§2.3 (1)) are done. The son of an undecided father (two likely
+      // plots: often two targets, a wingman joining) whose non-manoeuvre pair was confirmed
+      // (§2.2) has its update in this scan: a sibling promoted in this scan makes it
+      // independent (§2.3 (2)) instead of deleting it, so the wingman keeps its plots. The
+      // sons of a lost father are one target's hypotheses: the paper's order stands.
+      for (const BranchPair& p : confirmed) {
+        if (p.kind != PairKind::kSonNonManoeuvre) continue;
+        const std::int64_t son = tracks_[p.track].id;
+        if (of_undecided_father(son)) tree_.mark_non_manoeuvre_update(son);
+      }
+      sons_marked = true;
+    }
+    if (pair.kind > PairKind::kSonNonManoeuvre && !sons_promoted) {
+      promote_confirmed_sons(report, frame);
+      sons_promoted = true;
+    }
     // An earlier decision of this batch may have removed the track.
     if (tracks_[pair.track].life.status == TrackStatus::kDeleted) continue;
     switch (pair.kind) {
@@ -382,6 +401,31 @@ void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
         break;
     }
   }
+  if (!sons_promoted) promote_confirmed_sons(report, frame);
+}
+
+bool PointTracker::of_undecided_father(std::int64_t son) const {
+  const int f = slot(tree_.father_of(son));
+  return f >= 0 && tracks_[f].undecided;
+}
+
+void PointTracker::promote_confirmed_sons(ScanReport& report, TrackFrame& frame) {
+  // The sons of an undecided father confirmed in the same scan: the one whose plot fits its
+  // prediction best takes the number; the others, updated too, become independent
+  // (§2.3 (2)). In pair order (JPDA weights, about 1 for a son alone in its cluster) the
+  // first would win by chance.
+  std::stable_sort(
+      confirmed_sons_.begin(), confirmed_sons_.end(),
+      [](const ConfirmedSon& a, const ConfirmedSon& b) { return a.likelihood > b.likelihood; });
+  for (const ConfirmedSon& son : confirmed_sons_) {
+    const PointTrack& track = tracks_[son.track];
+    if (track.life.status == TrackStatus::kDeleted || track.branch != BranchType::kSon) continue;
+    changes_.clear();
+    tree_.promote(track.id, changes_);
+    apply(changes_, "confirmed with plot " + std::to_string(son.plot_id) + " (rule 10)", report,
+          frame);
+  }
+  confirmed_sons_.clear();
 }
 
 void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame) {
@@ -391,9 +435,14 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   PointTrack& branch = tracks_[t];
   const std::int64_t number = branch.id;
   const BranchType type = branch.branch;
-  const double likelihood_ratio =
-      soft_update(t, non_manoeuvre ? candidates_ : manoeuvre_candidates_, u.candidates, u.beta,
-                  u.miss, number, frame);
+  std::vector<Candidate>& pool = non_manoeuvre ? candidates_ : manoeuvre_candidates_;
+  double pair_likelihood = 0.0;  // of its own plot: which son wins (promote_confirmed_sons)
+  for (const int c : u.candidates) {
+    if (pool[c].plot == pair.plot && pool[c].hypothesis.usable) {
+      pair_likelihood = pool[c].hypothesis.likelihood;
+    }
+  }
+  const double likelihood_ratio = soft_update(t, pool, u.candidates, u.beta, u.miss, number, frame);
   branch.quality = 0.8 * branch.quality + 0.2 * (1.0 - u.miss);
   branch.last_plot = plots_[pair.plot];
   branch.last_plot_batch = batches_;
@@ -423,6 +472,10 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
                      profile_.association.gate_probability, profile_.track_life);
   }
   if (advance_life(branch.life, true, 0.0, life_of(branch)).confirmed) {
+    if (non_manoeuvre && of_undecided_father(number)) {  // see promote_confirmed_sons
+      confirmed_sons_.push_back({t, pair_likelihood, plots_[pair.plot].plot_id});
+      return;
+    }
     changes_.clear();
     tree_.promote(number, changes_);
     apply(changes_, "confirmed with plot " + plot + " (rule 10)", report, frame);

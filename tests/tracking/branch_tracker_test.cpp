@@ -399,6 +399,38 @@ TEST(BranchTracker, AmbiguousUpdateLetsTheSonsFromItsPlotsDecideWhileTheFatherIs
   EXPECT_EQ(s.live_branches(), 0);
 }
 
+TEST(BranchTracker, SonUpdatedWhenItsSiblingWinsBecomesATrackOfItsOwn) {
+  // GIVEN track 1 undecided between two plots 60 m apart (two aircraft, one unseen so far)
+  config::TrackingProfile profile = branch_profile();
+  profile.branching.ambiguity_beta = 0.3;
+  Script s(profile);
+  s.start();
+  s.scan(4, {{400.0, 30.0}, {400.0, -30.0}});
+  ASSERT_EQ(s.live_branches(), 2);
+  // WHEN both sons' targets are seen again, son 2's on its prediction, son 3's 50 m off it
+  // (both plots lie in both sons' gates: a son starts wide)
+  s.scan(5, {{500.0, 60.0}, {500.0, -110.0}});
+  // THEN both sons are confirmed in this scan; the likelier (son 2) replaces the father under
+  // number 1 and son 3, updated in the same scan, becomes a track of its own (§2.3 (2))
+  // instead of being deleted as a son without a non-manoeuvre update
+  EXPECT_EQ(s.events("branch_promoted"),
+            (std::vector<std::string>{
+                "1: son 2 of track 1 replaces track 1: confirmed with plot 501 (rule 10)"}));
+  EXPECT_EQ(s.events("initiated"),
+            (std::vector<std::string>{
+                "3: independent son 3 of track 1: confirmed with plot 501 (rule 10)"}));
+  EXPECT_TRUE(s.events("branch_pruned").empty());
+  EXPECT_EQ(s.live_branches(), 0);
+  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1, 3}));
+  EXPECT_NEAR(s.track(1)->position.y(), 60.0, 20.0);
+  EXPECT_NEAR(s.track(3)->position.y(), -110.0, 20.0);
+  // AND both keep their numbers on their targets
+  s.scan(6, {{600.0, 90.0}, {600.0, -190.0}});
+  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1, 3}));
+  EXPECT_NEAR(s.track(1)->position.y(), 90.0, 20.0);
+  EXPECT_NEAR(s.track(3)->position.y(), -190.0, 30.0);
+}
+
 TEST(BranchTracker, AnotherTracksLikeliestPlotMakesNoAmbiguity) {
   // GIVEN ambiguity_beta 0.3 and two targets 10 m apart flying east side by side (a
   // formation): each track weighs both plots about half and half

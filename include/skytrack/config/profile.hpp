@@ -161,7 +161,7 @@ struct BranchingSpec {
   // more than a miss), neither the likeliest plot of another father, cannot decide in one
   // frame: the plots start its sons, which decide, while it is still reported. 1: never
   // (the father takes the likelier plot, rule 5).
-  double ambiguity_beta = 1.0;
+  double ambiguity_beta = 0.3;
   int max_branches_per_father = 12;  // sons + grandsons of one father (3 + 9 at 3 children)
   int max_total_branches = 2000;     // in the whole tracker: bounds time and memory
   bool operator==(const BranchingSpec&) const = default;

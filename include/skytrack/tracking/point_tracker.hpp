@@ -188,6 +188,9 @@ class PointTracker {
                      double beta_miss, TrackFrame& frame);
   void confirm_branch_pairs(ScanReport& report, TrackFrame& frame);
   void update_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame);
+  /// Rule 10 for the undecided fathers' sons confirmed in this scan, likeliest first.
+  void promote_confirmed_sons(ScanReport& report, TrackFrame& frame);
+  bool of_undecided_father(std::int64_t son) const;
   void create_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame);
   /// A son's start: its father's prediction through the manoeuvre models, updated by `plot`.
   ImmEstimate son_start(int father, const PlotMeasurement& plot) const;
@@ -271,6 +274,12 @@ class PointTracker {
     double miss = 0.0;
   };
   std::vector<PendingSplit> pending_splits_;
+  struct ConfirmedSon {  // a son confirmed by its non-manoeuvre pair, awaiting promotion
+    int track = 0;
+    double likelihood = 0.0;  // of the plot of its pair
+    std::int64_t plot_id = 0;
+  };
+  std::vector<ConfirmedSon> confirmed_sons_;
   std::vector<int> claimed_by_;  // per plot: the father whose likeliest it is; -1 none, -2 several
   std::vector<Sphere> mode_reach_;               // gate_manoeuvre's models' regions
   std::vector<Candidate> candidates_;            // non-manoeuvre gates
