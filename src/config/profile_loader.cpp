@@ -264,6 +264,7 @@ BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingPro
   const bool names_ok = errors.messages().size() == before;
   s.number("manoeuvre_accel_sigma", b.manoeuvre_accel_sigma, Range::positive());
   s.number("ambiguity_beta", b.ambiguity_beta, Range::open_probability());
+  s.boolean("coast_on_last_motion", b.coast_on_last_motion);
   s.integer("max_branches_per_father", b.max_branches_per_father, kAtLeastOne);
   s.integer("max_total_branches", b.max_total_branches, kAtLeastOne);
   s.finish();

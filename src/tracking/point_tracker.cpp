@@ -251,7 +251,8 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     // A sector batch looks at a track whose predicted position lies in the sector; one whose
     // search region only reaches into it may take a plot from it but is not aged by it.
     covered_[t] = covers(scan, centre) ? 1 : 0;
-    if (covered_[t] != 0 && suspends_before_gating(tracks_[t], mid)) {
+    if (covered_[t] != 0 &&
+        suspends_before_gating(tracks_[t], mid, std::max(batch_mid, estimate.time))) {
       tracks_[t].doomed = batches_;
       suspended_at_gate_.push_back(static_cast<int>(t));
     }
@@ -273,16 +274,43 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     // The track is updated at the time of its nearest candidate plot.
     predicted_[t] = filter_.predict(estimate, std::max(nearest_time(centre), estimate.time));
     if (!non_manoeuvre) continue;
+    const bool narrowed = last_motion(track, predicted_[t].time, last_motion_);
     for (const int j : neighbours_) {
       PlotHypothesis hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
       if (!hypothesis.usable) continue;
-      // A plot inside any mode's gate (the union of the modes' gates) is a candidate.
-      if (hypothesis.min_nis > gate_threshold_[plots_[j].model.size()]) continue;
+      double nis = hypothesis.min_nis;
+      if (narrowed) {
+        const Innovation in = innovate(last_motion_, layout_, plots_[j], profile_.measurement);
+        nis = in.ok ? in.nis : std::numeric_limits<double>::infinity();
+      }
+      // A plot inside any mode's gate (the union of the modes' gates), or a coasting father's
+      // last motion's gate (branching.coast_on_last_motion), is a candidate.
+      if (nis > gate_threshold_[plots_[j].model.size()]) continue;
       gated_[j] = 1;
       const double likelihood = hypothesis.likelihood;
       candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis), likelihood});
     }
   }
+}
+
+bool PointTracker::last_motion(const PointTrack& track, double time, Gaussian& out,
+                               bool missing_now) const {
+  if (!branching() || !profile_.branching.coast_on_last_motion ||
+      track.branch != BranchType::kFather || !track.last_detected ||
+      !is_reported_as_firm(track.life.status) ||
+      (track.life.consecutive_misses < 1 && !missing_now)) {
+    return false;
+  }
+  // The likeliest mode at the last detection, predicted alone: IMM mixing would blend in the
+  // other modes' diverging predictions.
+  ImmEstimate one = *track.last_detected;
+  Eigen::Index kept = 0;
+  one.probabilities.maxCoeff(&kept);
+  for (Gaussian& m : one.modes) m = one.modes[static_cast<std::size_t>(kept)];
+  one.probabilities.setZero();
+  one.probabilities[kept] = 1.0;
+  out = filter_.predict(one, std::max(time, one.time)).modes[static_cast<std::size_t>(kept)];
+  return true;
 }
 
 double PointTracker::search_radius(const Gaussian& g, const Eigen::Vector3d& centre,
@@ -442,7 +470,10 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   track.quality = 0.8 * track.quality + 0.2 * detection;
   update_existence(track.life, likelihood_ratio, pd, profile_.association.gate_probability,
                    profile_.track_life);
-  const double spread = mode_spread(track.estimate, layout_.dims);
+  double spread = mode_spread(track.estimate, layout_.dims);
+  if (detection <= 0.5 && last_motion(track, track.estimate.time, last_motion_, true)) {
+    spread = position_spread(last_motion_, layout_.dims);
+  }
   const LifeChange change = advance_life(track.life, detection > 0.5, spread, profile_.track_life);
   if (change.confirmed) {
     add_event(frame, "confirmed", track.id, "");
@@ -484,6 +515,9 @@ double PointTracker::soft_update(int t, std::vector<Candidate>& pool,
   for (double& b : kept_beta_) b /= kept;
   track.estimate = filter_.update(predicted_[t], hypotheses_, kept_beta_, beta_miss / kept, pd,
                                   profile_.association.gate_probability, density);
+  if (branching() && profile_.branching.coast_on_last_motion && beta_miss < 0.5) {
+    track.last_detected = track.estimate;  // it found its target
+  }
   return likelihood_ratio;
 }
 

@@ -110,10 +110,12 @@ bool PointTracker::may_start_sons(const PointTrack& father) const {
           father.life.consecutive_misses < profile_.track_life.delete_confirmed_misses);
 }
 
-bool PointTracker::suspends_before_gating(const PointTrack& track, const Gaussian& mid) const {
+bool PointTracker::suspends_before_gating(const PointTrack& track, const Gaussian& mid,
+                                          double time) const {
+  Gaussian last;
   return branching() && track.branch == BranchType::kFather && !track.doomed &&
          is_reported_as_firm(track.life.status) && tree_.branch_count(track.id) > 0 &&
-         position_spread(mid, layout_.dims) >
+         position_spread(last_motion(track, time, last) ? last : mid, layout_.dims) >
              kSuspendBeforeGating * profile_.track_life.delete_position_sigma;
 }
 

@@ -306,5 +306,15 @@ TEST(ProfileLoader, ManoeuvreAccelerationMustBePositive) {
   EXPECT_DOUBLE_EQ(profile->branching.manoeuvre_accel_sigma, 35.5);
 }
 
+TEST(ProfileLoader, CoastOnLastMotionIsASwitch) {
+  const auto profile = parse_profile(
+      "profile: {name: p, version: '1'}\nbranching: {coast_on_last_motion: true}\n", "p.yaml");
+  ASSERT_TRUE(profile) << profile.error().message;
+  EXPECT_TRUE(profile->branching.coast_on_last_motion);
+  EXPECT_FALSE(TrackingProfile{}.branching.coast_on_last_motion);
+  EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: 2\n"),
+              ::testing::HasSubstr("branching.coast_on_last_motion"));
+}
+
 }  // namespace
 }  // namespace skytrack::config

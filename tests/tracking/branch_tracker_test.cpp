@@ -581,6 +581,54 @@ TEST(BranchTracker, NewTrackConfirmedInTheManoeuvreGateOfASuspendedFatherTakesIt
   EXPECT_TRUE(s.associated(1, 901));
 }
 
+/// branch_profile() with a left-turn mode (0.5 rad/s) beside CV in the IMM.
+config::TrackingProfile turning_profile(bool coast_on_last_motion) {
+  config::TrackingProfile p = branch_profile();
+  p.motion_models.push_back({.name = "ct_left",
+                             .type = config::MotionModelType::kCoordinatedTurn,
+                             .accel_sigma = 1.0,
+                             .turn_rate = 0.5});
+  p.mode_transition = {{0.9, 0.1}, {0.1, 0.9}};
+  p.initial_mode_probabilities = {0.9, 0.1};
+  p.branching.coast_on_last_motion = coast_on_last_motion;
+  return p;
+}
+
+TEST(BranchTracker, FatherThatMissedTakesPlotsOnlyOnItsLastMotion) {
+  // GIVEN confirmed track 1 flying straight east, which misses its plot at t = 4, and at
+  // t = 5 a plot 30 m short of and 90 m left of its straight line: where a left turn from
+  // its last plot would be (200 m radius, 1 rad in 2 s: 468, 92), in its turn mode's gate,
+  // about 95 m outside its CV prediction (a CV gate of a few tens of metres)
+  for (const bool on : {true, false}) {
+    SCOPED_TRACE(on ? "coast_on_last_motion" : "union of the modes' gates");
+    Script s(turning_profile(on));
+    s.start();
+    s.scan(4, {});
+    s.scan(5, {{470.0, 90.0}});
+    if (!on) {  // THEN without the rule the father takes it and is pulled off its line
+      EXPECT_TRUE(s.associated(1, 501));
+      EXPECT_TRUE(s.events("branch_created").empty());
+      EXPECT_GT(s.track(1)->position.y(), 20.0);
+      continue;
+    }
+    // THEN with it the father coasts on, and the plot, in its manoeuvre gate, starts son 2
+    EXPECT_FALSE(s.associated(1, 501));
+    EXPECT_EQ(s.events("branch_created"),
+              (std::vector<std::string>{"1: son 2 of track 1 from plot 501"}));
+    EXPECT_EQ(s.track(1)->status, TrackStatus::kCoasting);
+    EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
+    // WHEN the target's plot returns on the straight line (the other was a false alarm)
+    s.scan(6, {{600.0, 0.0}});
+    // THEN the father takes it and its son is pruned (rule 5): number 1 holds the target
+    EXPECT_TRUE(s.associated(1, 601));
+    EXPECT_EQ(s.events("branch_pruned"),
+              (std::vector<std::string>{"1: son 2 of track 1: track 1 took plot 601 (rule 5)"}));
+    EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+    EXPECT_EQ(s.track(1)->status, TrackStatus::kConfirmed);
+    EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
+  }
+}
+
 TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {
   // GIVEN the same script with branching off
   config::TrackingProfile profile = branch_profile();

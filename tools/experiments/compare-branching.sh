@@ -10,12 +10,14 @@
 # repository root).
 #
 # Usage: tools/experiments/compare-branching.sh [--seeds N] [--first-seed S] [--jobs J]
-#            [--profile P] [--only exp1|exp2|exp3] [--out DIR]
+#            [--profile P] [--only exp1|exp2|exp3] [--scenario-dir D] [--out DIR]
 #   --profile P     the branching-on profile (default: the built-in default profile)
 #   --seeds N       seeds per scenario (default 100): S, S+1, ..., S+N-1
 #   --first-seed S  first seed (default 1)
 #   --jobs J        runs at once (default 2)
 #   --only E        one experiment only (repeatable): exp1, exp2 or exp3
+#   --scenario-dir D  the scenario files (same names) from D instead of config/scenarios,
+#                   e.g. a copy of exp. 2 with another clutter-patch density
 #   --out DIR       plots, truth, tracks and scores (default out/experiments/compare-branching;
 #                   out/ is git-ignored); the JSON Lines files are gzipped once scored
 #                   (100 seeds of the three scenarios: 1.2 GB plain, a third of it gzipped);
@@ -40,6 +42,7 @@ first_seed=1
 jobs=2
 only=()
 out="$root/out/experiments/compare-branching"
+scenario_dir="$root/config/scenarios"
 
 usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; }
 while [[ $# -gt 0 ]]; do
@@ -50,6 +53,7 @@ while [[ $# -gt 0 ]]; do
     --out) out=$2; shift 2 ;;
     --profile) on_profile=$2; shift 2 ;;
     --only) only+=("$2"); shift 2 ;;
+    --scenario-dir) scenario_dir=$(cd "$2" && pwd); shift 2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "compare-branching: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
@@ -74,7 +78,7 @@ mkdir -p "$out"
 one_run() {
   local scen=$1 seed=$2
   local base="$out/$scen.$seed"
-  "$skytrack" simulate --scenario "$root/config/scenarios/$scen.yaml" --plots "$base.plots.jsonl" \
+  "$skytrack" simulate --scenario "$scenario_dir/$scen.yaml" --plots "$base.plots.jsonl" \
     --truth "$base.truth.jsonl" --seed "$seed" >/dev/null 2>"$base.simulate.log"
   "$skytrack" track ${on_profile:+--profile "$on_profile"} --plots "$base.plots.jsonl" \
     --out "$base.on.tracks.jsonl" --quiet 2>"$base.on.track.log"
@@ -87,7 +91,7 @@ one_run() {
   gzip -1 -f "$base.plots.jsonl" "$base.truth.jsonl" "$base.on.tracks.jsonl" "$base.off.tracks.jsonl"
 }
 export -f one_run
-export skytrack root out off_profile on_profile
+export skytrack root out off_profile on_profile scenario_dir
 
 for scen in "${scenarios[@]}"; do
   for ((s = first_seed; s < first_seed + seeds; ++s)); do echo "$scen $s"; done

@@ -162,6 +162,12 @@ struct BranchingSpec {
   // frame: the plots start its sons, which decide, while it is still reported. 1: never
   // (the father takes the likelier plot, rule 5).
   double ambiguity_beta = 0.3;
+  // A firm father that missed its last scan gates non-manoeuvre pairs on the motion it was
+  // last seen in: its likeliest mode at its latest detection, predicted without IMM mixing
+  // (which blends in the other modes' diverging predictions). Plots off that motion lie in
+  // its manoeuvre gate only and start sons (paper 003 §4.2). false: the union of all modes.
+  // Off by default: it helps in clutter (exp. 2) but costs exp. 1 turns (docs/branch-tracker.md).
+  bool coast_on_last_motion = false;
   int max_branches_per_father = 12;  // sons + grandsons of one father (3 + 9 at 3 children)
   int max_total_branches = 2000;     // in the whole tracker: bounds time and memory
   bool operator==(const BranchingSpec&) const = default;

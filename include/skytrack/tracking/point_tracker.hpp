@@ -85,6 +85,9 @@ struct PointTrack {
   // A son started from a plot chain (§3.3): confirmed on its existence, as the same chain
   // would be as a new track, not on plot counts.
   bool from_chain = false;
+  // Its estimate after its latest update that found its target (detection > 0.5): a firm
+  // father that missed since gates non-manoeuvre pairs on the motion it was last seen in.
+  std::optional<ImmEstimate> last_detected;
 };
 
 class PointTracker {
@@ -135,6 +138,10 @@ class PointTracker {
   /// True when a search region (centre, radius) reaches into the batch's coverage.
   bool covers_region(const PlotScan& scan, const Eigen::Vector3d& centre, double radius) const;
   void gate(const PlotScan& scan, double batch_mid, double half_span);
+  /// A firm father that missed since its last detection: its likeliest mode then, predicted
+  /// alone to `time` into `out` (the motion it was last seen in). False otherwise.
+  bool last_motion(const PointTrack& track, double time, Gaussian& out,
+                   bool missing_now = false) const;
   /// Radius of the region around `centre` holding g's gate at `threshold` (chi-square).
   double search_radius(const Gaussian& g, const Eigen::Vector3d& centre, double threshold,
                        const PlotScan& scan) const;
@@ -176,7 +183,7 @@ class PointTracker {
   /// A firm, not yet doomed father whose prediction `mid` is already wider than
   /// delete_position_sigma: its non-manoeuvre gate would take clutter and cut the branch
   /// that follows the target, so it is suspended before gating.
-  bool suspends_before_gating(const PointTrack& track, const Gaussian& mid) const;
+  bool suspends_before_gating(const PointTrack& track, const Gaussian& mid, double time) const;
   /// Notes the likeliest plot of father `t`'s non-manoeuvre update in claimed_by_.
   void claim_best_plot(int t, const std::vector<Candidate>& pool, std::span<const int> mine,
                        std::span<const double> beta, double miss);
@@ -258,6 +265,7 @@ class PointTracker {
   std::vector<int> suspended_at_gate_;      // fathers suspended on their prediction
   std::vector<ImmEstimate> predicted_;      // per track, at its update time
   std::vector<ImmEstimate> previous_;       // per track, before this batch (branching)
+  Gaussian last_motion_;                    // last_motion()'s result
   std::vector<std::uint8_t> has_previous_;  // previous_ holds this batch's prior
   struct LostFather {  // a suspended father and its manoeuvre gate's reach this batch
     int track = 0;
