@@ -85,8 +85,8 @@ struct PointTrack {
   // A son started from a plot chain (§3.3): confirmed on its existence, as the same chain
   // would be as a new track, not on plot counts.
   bool from_chain = false;
-  // Its estimate after its latest update that found its target (detection > 0.5): a firm
-  // father that missed since gates non-manoeuvre pairs on the motion it was last seen in.
+  // Its estimate after its latest update that found its target (detection > 0.5), kept with
+  // branching.coast_on_last_motion: a firm father that missed since gates on that motion.
   std::optional<ImmEstimate> last_detected;
 };
 
