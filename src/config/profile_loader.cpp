@@ -265,10 +265,17 @@ BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingPro
   s.number("manoeuvre_accel_sigma", b.manoeuvre_accel_sigma, Range::positive());
   s.number("ambiguity_beta", b.ambiguity_beta, Range::open_probability());
   s.boolean("coast_on_last_motion", b.coast_on_last_motion);
+  read_enum(s, "non_manoeuvre_gate", b.non_manoeuvre_gate,
+            {NonManoeuvreGate::kUnion, NonManoeuvreGate::kLastMotion});
+  read_enum(s, "confirmation", b.confirmation,
+            {ConfirmationMethod::kMOfN, ConfirmationMethod::kExistence});
   s.integer("max_branches_per_father", b.max_branches_per_father, kAtLeastOne);
   s.integer("max_total_branches", b.max_total_branches, kAtLeastOne);
   s.finish();
 
+  if (b.non_manoeuvre_gate == NonManoeuvreGate::kLastMotion && !b.coast_on_last_motion) {
+    s.error("non_manoeuvre_gate", "last_motion needs coast_on_last_motion: true");
+  }
   // The manoeuvre gate is the wider of the two (paper 003 §1).
   if (b.manoeuvre_gate_probability < p.association.gate_probability) {
     s.error("manoeuvre_gate_probability", "expected >= association.gate_probability (" +

@@ -19,6 +19,7 @@ using tracking_detail::add_event;
 using tracking_detail::mode_spread;
 using tracking_detail::position_of;
 using tracking_detail::position_spread;
+using tracking_detail::valid_association;
 using tracking_detail::velocity_of;
 
 using Clock = std::chrono::steady_clock;
@@ -82,11 +83,12 @@ Expected<std::optional<ImmFilter>> manoeuvre_filter(const config::TrackingProfil
   return std::optional<ImmFilter>(std::move(*filter));
 }
 
-/// The life rules of sons and grandsons: the profile's, confirmed on plot counts (rule 10
-/// of paper 003 §1: a branch is confirmed by its own run of associations), since a branch
-/// starts from two plots that a father's existence already accounts for.
-config::TrackLifeSpec branch_life(config::TrackLifeSpec spec) {
-  spec.confirmation = config::ConfirmationMethod::kMOfN;
+/// The life rules of sons and grandsons started from manoeuvre pairs: the profile's, with
+/// branching.confirmation (m_of_n: rule 10 of paper 003 §1 as in its examples, a branch
+/// confirmed by its own run of associations).
+config::TrackLifeSpec branch_life(const config::TrackingProfile& profile) {
+  config::TrackLifeSpec spec = profile.track_life;
+  spec.confirmation = profile.branching.confirmation;
   return spec;
 }
 
@@ -110,7 +112,7 @@ Expected<PointTracker> PointTracker::create(const config::TrackingProfile& profi
 PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout layout,
                            ImmFilter filter, std::optional<ImmFilter> manoeuvre)
     : profile_(profile),
-      branch_life_(branch_life(profile.track_life)),
+      branch_life_(branch_life(profile)),
       layout_(layout),
       filter_(std::move(filter)),
       manoeuvre_(std::move(manoeuvre)),
@@ -230,7 +232,12 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     for (std::size_t t = 0; t < tracks_.size(); ++t) {
       const PointTrack& track = tracks_[t];
       if (track.branch != BranchType::kFather || is_reported_as_firm(track.life.status)) {
-        previous_[t] = track.estimate;
+        // A father holding its last motion since a miss: its manoeuvre gate and sons start
+        // from its last update (rule 6), coasted by its IMM, whose turn modes reach where a
+        // turn since then has gone.
+        const bool held = holds_last_motion() && track.branch == BranchType::kFather &&
+                          track.life.consecutive_misses >= 1 && track.last_detected;
+        previous_[t] = held && track.coasted ? *track.coasted : track.estimate;
         has_previous_[t] = 1;
       }
     }
@@ -240,7 +247,9 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   const double widest = gate_threshold_[kMaxMeasurementDim];
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
     PointTrack& track = tracks_[t];
-    if (track.undecided && tree_.branch_count(track.id) == 0) {  // its sons are gone
+    // Undecided until its sons are gone; for one look only when it holds its last motion,
+    // which stays its hypothesis beside its sons' (rule 5 then decides between them).
+    if (track.undecided && (tree_.branch_count(track.id) == 0 || holds_last_motion())) {
       track.doomed.reset();
       track.undecided = false;
     }
@@ -274,13 +283,14 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     // The track is updated at the time of its nearest candidate plot.
     predicted_[t] = filter_.predict(estimate, std::max(nearest_time(centre), estimate.time));
     if (!non_manoeuvre) continue;
-    const bool narrowed = last_motion(track, predicted_[t].time, last_motion_);
+    const std::optional<ImmEstimate> narrowed = last_motion(track, predicted_[t].time);
     for (const int j : neighbours_) {
       PlotHypothesis hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
       if (!hypothesis.usable) continue;
       double nis = hypothesis.min_nis;
       if (narrowed) {
-        const Innovation in = innovate(last_motion_, layout_, plots_[j], profile_.measurement);
+        const Innovation in =
+            innovate(narrowed->modes.front(), layout_, plots_[j], profile_.measurement);
         nis = in.ok ? in.nis : std::numeric_limits<double>::infinity();
       }
       // A plot inside any mode's gate (the union of the modes' gates), or a coasting father's
@@ -293,13 +303,27 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   }
 }
 
-bool PointTracker::last_motion(const PointTrack& track, double time, Gaussian& out,
-                               bool missing_now) const {
+void PointTracker::hold_last_motion(PointTrack& track) const {
+  const std::optional<ImmEstimate> coast = last_motion(track, track.estimate.time, true);
+  if (!coast) return;
+  track.coasted = track.life.consecutive_misses >= 1 && track.coasted
+                      ? filter_.predict(*track.coasted, track.estimate.time)
+                      : track.estimate;
+  track.estimate = *coast;
+}
+
+bool PointTracker::holds_last_motion() const {
+  return branching() && profile_.branching.coast_on_last_motion;
+}
+
+std::optional<ImmEstimate> PointTracker::last_motion(const PointTrack& track, double time,
+                                                     bool missing_now) const {
   if (!branching() || !profile_.branching.coast_on_last_motion ||
       track.branch != BranchType::kFather || !track.last_detected ||
       !is_reported_as_firm(track.life.status) ||
-      (track.life.consecutive_misses < 1 && !missing_now)) {
-    return false;
+      (track.life.consecutive_misses < 1 && !missing_now &&
+       profile_.branching.non_manoeuvre_gate != config::NonManoeuvreGate::kLastMotion)) {
+    return std::nullopt;
   }
   // The likeliest mode at the last detection, predicted alone: IMM mixing would blend in the
   // other modes' diverging predictions.
@@ -309,8 +333,9 @@ bool PointTracker::last_motion(const PointTrack& track, double time, Gaussian& o
   for (Gaussian& m : one.modes) m = one.modes[static_cast<std::size_t>(kept)];
   one.probabilities.setZero();
   one.probabilities[kept] = 1.0;
-  out = filter_.predict(one, std::max(time, one.time)).modes[static_cast<std::size_t>(kept)];
-  return true;
+  ImmEstimate predicted = filter_.predict(one, std::max(time, one.time));
+  for (Gaussian& m : predicted.modes) m = predicted.modes[static_cast<std::size_t>(kept)];
+  return predicted;
 }
 
 double PointTracker::search_radius(const Gaussian& g, const Eigen::Vector3d& centre,
@@ -470,11 +495,16 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   track.quality = 0.8 * track.quality + 0.2 * detection;
   update_existence(track.life, likelihood_ratio, pd, profile_.association.gate_probability,
                    profile_.track_life);
-  double spread = mode_spread(track.estimate, layout_.dims);
-  if (detection <= 0.5 && last_motion(track, track.estimate.time, last_motion_, true)) {
-    spread = position_spread(last_motion_, layout_.dims);
+  bool detected = detection > 0.5;
+  if (holds_last_motion()) {
+    // branching.coast_on_last_motion: a father with no valid association (§2.2: no plot
+    // likelier than its miss) coasts on the motion it was last seen in, however much its
+    // plots weigh together; the turns it may have started are its sons' to find (§4.2).
+    detected = valid_association(beta_plots, beta_miss);
+    if (!detected) hold_last_motion(track);
   }
-  const LifeChange change = advance_life(track.life, detection > 0.5, spread, profile_.track_life);
+  const LifeChange change = advance_life(
+      track.life, detected, mode_spread(track.estimate, layout_.dims), profile_.track_life);
   if (change.confirmed) {
     add_event(frame, "confirmed", track.id, "");
     if (branching()) confirmed_now_.push_back(t);
@@ -515,8 +545,8 @@ double PointTracker::soft_update(int t, std::vector<Candidate>& pool,
   for (double& b : kept_beta_) b /= kept;
   track.estimate = filter_.update(predicted_[t], hypotheses_, kept_beta_, beta_miss / kept, pd,
                                   profile_.association.gate_probability, density);
-  if (branching() && profile_.branching.coast_on_last_motion && beta_miss < 0.5) {
-    track.last_detected = track.estimate;  // it found its target
+  if (holds_last_motion() && valid_association(beta_plots, beta_miss)) {
+    track.last_detected = track.estimate;  // it found its target (a son, later a father)
   }
   return likelihood_ratio;
 }

@@ -98,6 +98,10 @@ const config::TrackLifeSpec& PointTracker::life_of(const PointTrack& branch) con
   return branch.from_chain ? profile_.track_life : branch_life_;
 }
 
+bool PointTracker::weighs_existence(const PointTrack& branch) const {
+  return branch.from_chain || branch_life_.confirmation == config::ConfirmationMethod::kExistence;
+}
+
 int PointTracker::recovery_misses() const {
   // A suspended father waits, unreported, for initiation.n more scans after it may no longer
   // branch: the time a plot chain of its target needs to form and confirm (§3.3).
@@ -112,11 +116,13 @@ bool PointTracker::may_start_sons(const PointTrack& father) const {
 
 bool PointTracker::suspends_before_gating(const PointTrack& track, const Gaussian& mid,
                                           double time) const {
-  Gaussian last;
-  return branching() && track.branch == BranchType::kFather && !track.doomed &&
-         is_reported_as_firm(track.life.status) && tree_.branch_count(track.id) > 0 &&
-         position_spread(last_motion(track, time, last) ? last : mid, layout_.dims) >
-             kSuspendBeforeGating * profile_.track_life.delete_position_sigma;
+  if (!branching() || track.branch != BranchType::kFather || track.doomed ||
+      !is_reported_as_firm(track.life.status) || tree_.branch_count(track.id) == 0) {
+    return false;
+  }
+  const std::optional<ImmEstimate> last = last_motion(track, time);
+  return position_spread(last ? last->modes.front() : mid, layout_.dims) >
+         kSuspendBeforeGating * profile_.track_life.delete_position_sigma;
 }
 
 ImmEstimate PointTracker::manoeuvre_prediction(const ImmEstimate& estimate, double time) const {
@@ -192,6 +198,8 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
         const bool split = kind == PairKind::kFatherNonManoeuvre && !was_doomed &&
                            may_start_sons(tracks_[t]) &&
                            ambiguous(beta, miss, profile_.branching.ambiguity_beta);
+        std::optional<ImmEstimate> last_detected;
+        if (split && holds_last_motion()) last_detected = tracks_[t].last_detected;
         if (kind == PairKind::kFatherNonManoeuvre) update_father(t, mine, beta, miss, frame);
         // A doomed father takes no non-manoeuvre pair but may start sons, so that a
         // branch can still keep its number.
@@ -206,6 +214,7 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
             PendingSplit& p = pending_splits_.emplace_back();
             p.track = t;
             p.miss = miss;
+            p.last_detected = std::move(last_detected);
             for (std::size_t k = 0; k < mine.size(); ++k) {
               p.plots.push_back(pool[mine[k]].plot);
               p.beta.push_back(beta[k]);
@@ -326,6 +335,10 @@ void PointTracker::split_undecided_fathers(TrackFrame& frame) {
     });
     track.doomed = batches_;
     track.undecided = true;
+    if (holds_last_motion()) {  // its sons hold the plots; it coasts on its last motion
+      track.last_detected = p.last_detected;
+      hold_last_motion(track);
+    }
     add_event(frame, "undecided", track.id,
               "two plots above ambiguity_beta: the sons from its plots decide");
     for (std::size_t k = 0; k < p.plots.size(); ++k) {
@@ -469,7 +482,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   // Rule 10: every branch update is followed by the confirmation test. A branch that took
   // its pair is not deleted for its spread: the PDA posterior of a wide prior (a son started
   // after misses) stays wide for a scan; misses end it (age_branches).
-  if (branch.from_chain) {
+  if (weighs_existence(branch)) {
     update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
                      profile_.association.gate_probability, profile_.track_life);
   }
@@ -510,6 +523,12 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   branch.id = next_id_++;
   branch.branch = of_father ? BranchType::kSon : BranchType::kGrandson;
   branch.life = initiated_life(2, initiation.scans);
+  // Its existence starts at its pair's association probability (the chance that the plot
+  // is its parent's target; at least a new track's): its later plots decide.
+  if (weighs_existence(branch)) {
+    branch.life.existence = std::clamp(pair.probability, profile_.track_life.initial_existence,
+                                       profile_.track_life.confirm_existence);
+  }
   branch.estimate =
       of_father ? son_start(pair.track, plot) : start_estimate(initiation, branch.life);
   branch.quality = parent_quality;
@@ -598,7 +617,7 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
     branch.estimate = filter_.predict(branch.estimate, std::max(frame.time, branch.estimate.time));
     branch.score += miss;
     const double spread = mode_spread(branch.estimate, layout_.dims);
-    if (branch.from_chain) {
+    if (weighs_existence(branch)) {
       update_existence(branch.life, 0.0, profile_.association.detection_probability,
                        profile_.association.gate_probability, profile_.track_life);
     }

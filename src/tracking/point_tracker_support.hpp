@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -36,6 +37,12 @@ inline double mode_spread(const ImmEstimate& estimate, int dims) {
     sum += estimate.probabilities[static_cast<Eigen::Index>(j)] * s * s;
   }
   return std::sqrt(sum);
+}
+
+/// Paper 003 §2.2: a track-plot pair is a valid association when its probability exceeds
+/// the track's miss probability; a track has one when any of its pairs is valid.
+inline bool valid_association(std::span<const double> beta, double miss) {
+  return std::any_of(beta.begin(), beta.end(), [miss](double b) { return b > miss; });
 }
 
 inline Eigen::Vector3d position_of(const StateVec& x, int dims) {

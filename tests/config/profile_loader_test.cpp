@@ -1,6 +1,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -33,6 +34,18 @@ TEST(ProfileLoader, ShippedDefaultProfileLoads) {
   EXPECT_GT(profile->motion_models[1].turn_rate, 0.0);  // positive = left
   EXPECT_TRUE(profile->branching.enabled);
   EXPECT_FALSE(profile->association.clutter_density.has_value());  // auto
+}
+
+TEST(ProfileLoader, EveryShippedProfileLoads) {
+  const std::filesystem::path dir = std::filesystem::path(SKYTRACK_SOURCE_DIR) / "config/profiles";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".yaml") continue;
+    ++files;
+    const auto profile = load_profile(entry.path().string());
+    EXPECT_TRUE(profile) << profile.error().message;
+  }
+  EXPECT_GE(files, 8);
 }
 
 TEST(ProfileLoader, ShippedDefaultProfileEqualsTheCompiledDefaults) {
@@ -314,6 +327,30 @@ TEST(ProfileLoader, CoastOnLastMotionIsASwitch) {
   EXPECT_FALSE(TrackingProfile{}.branching.coast_on_last_motion);
   EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: 2\n"),
               ::testing::HasSubstr("branching.coast_on_last_motion"));
+}
+
+TEST(ProfileLoader, LastMotionGateNeedsCoastOnLastMotion) {
+  const auto profile = parse_profile(
+      "profile: {name: p, version: '1'}\n"
+      "branching: {coast_on_last_motion: true, non_manoeuvre_gate: last_motion}\n",
+      "p.yaml");
+  ASSERT_TRUE(profile) << profile.error().message;
+  EXPECT_EQ(profile->branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
+  EXPECT_EQ(TrackingProfile{}.branching.non_manoeuvre_gate, NonManoeuvreGate::kUnion);
+  EXPECT_THAT(error_of("branching:\n  non_manoeuvre_gate: last_motion\n"),
+              ::testing::HasSubstr("last_motion needs coast_on_last_motion: true"));
+  EXPECT_THAT(error_of("branching:\n  non_manoeuvre_gate: cv\n"),
+              ::testing::HasSubstr("branching.non_manoeuvre_gate"));
+}
+
+TEST(ProfileLoader, BranchConfirmationIsMOfNOrExistence) {
+  const auto profile = parse_profile(
+      "profile: {name: p, version: '1'}\nbranching: {confirmation: existence}\n", "p.yaml");
+  ASSERT_TRUE(profile) << profile.error().message;
+  EXPECT_EQ(profile->branching.confirmation, ConfirmationMethod::kExistence);
+  EXPECT_EQ(TrackingProfile{}.branching.confirmation, ConfirmationMethod::kMOfN);
+  EXPECT_THAT(error_of("branching:\n  confirmation: score\n"),
+              ::testing::HasSubstr("branching.confirmation"));
 }
 
 }  // namespace

@@ -629,6 +629,94 @@ TEST(BranchTracker, FatherThatMissedTakesPlotsOnlyOnItsLastMotion) {
   }
 }
 
+TEST(BranchTracker, MissingFatherCoastsOnItsLastMotionWhileItsSonFollowsTheTurn) {
+  // GIVEN confirmed track 1 flying straight east at 100 m/s, whose target turns left at
+  // 0.5 rad/s from x = 300 m (t = 3) and is missed at t = 4; a manoeuvre gate of 10 m/s^2
+  // (about 80 m wide after 2 s) from a straight coast would not reach the turn's plots
+  for (const bool on : {true, false}) {
+    SCOPED_TRACE(on ? "coast_on_last_motion" : "IMM-JPDA coast");
+    config::TrackingProfile profile = turning_profile(on);
+    profile.branching.manoeuvre_accel_sigma = 10.0;
+    Script s(profile);
+    s.start();
+    s.scan(4, {});
+    // THEN the missing father is reported on its straight line only with the rule (without
+    // it, its IMM blends in the turn mode's prediction)
+    if (on) {
+      EXPECT_NEAR(s.track(1)->position.x(), 400.0, 0.5);
+      EXPECT_NEAR(s.track(1)->position.y(), 0.0, 0.3);
+    } else {
+      EXPECT_GT(s.track(1)->position.y(), 0.8);
+    }
+    // WHEN the turn's plots come at t = 5, 6 (200 m radius about (300, 200))
+    s.scan(5, {{468.3, 91.9}});
+    s.scan(6, {{499.5, 185.9}});
+    // THEN number 1 follows the target: with the rule, a son from the plot of t = 5 (its
+    // manoeuvre gate starts from the IMM's own coast, whose turn mode reaches the turn)
+    // takes the plot of t = 6, confirms and replaces the father (rule 10)
+    EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+    EXPECT_NEAR(s.track(1)->position.x(), 499.5, 30.0);
+    EXPECT_NEAR(s.track(1)->position.y(), 185.9, 30.0);
+    if (on) {
+      EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+      EXPECT_TRUE(s.associated(2, 601));
+    }
+  }
+}
+
+TEST(BranchTracker, LastMotionGateLeavesATurnModesPlotToASon) {
+  // GIVEN confirmed track 1 flying straight east, and at t = 4 (not after a miss) a plot
+  // 60 m left of its straight line, 37 m from where its left-turn mode predicts (396, 25):
+  // outside its CV gate, inside the turn mode's
+  for (const bool last_motion : {true, false}) {
+    SCOPED_TRACE(last_motion ? "non_manoeuvre_gate last_motion" : "union");
+    config::TrackingProfile profile = turning_profile(true);
+    if (last_motion) profile.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kLastMotion;
+    Script s(profile);
+    s.start();
+    s.scan(4, {{385.0, 60.0}});
+    if (!last_motion) {  // THEN the union gate lets the father take it
+      EXPECT_TRUE(s.associated(1, 401));
+      EXPECT_TRUE(s.events("branch_created").empty());
+      continue;
+    }
+    // THEN the last motion's gate does not: the plot starts son 2, the father coasts on
+    EXPECT_FALSE(s.associated(1, 401));
+    EXPECT_EQ(s.events("branch_created"),
+              (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
+    EXPECT_NEAR(s.track(1)->position.y(), 0.0, 1.0);
+  }
+}
+
+TEST(BranchTracker, SonConfirmedOnExistenceWeighsItsPlotsAgainstTheClutter) {
+  // GIVEN son 2 of track 1 (FatherManoeuvrePairStartsAHiddenSonFromTheFathersLastPlot) and
+  // its next plot in its non-manoeuvre gate, with branching.confirmation existence, in
+  // sparse clutter and in a clutter area of 10 false plots per km^2
+  for (const double clutter : {1e-8, 1e-5}) {
+    SCOPED_TRACE(clutter);
+    config::TrackingProfile profile = branch_profile();
+    profile.track_life.confirmation = config::ConfirmationMethod::kMOfN;  // the father's
+    profile.branching.confirmation = config::ConfirmationMethod::kExistence;
+    profile.association.clutter_density = clutter;
+    Script s(profile);
+    s.start();
+    s.scan(4, {{400.0, 150.0}});
+    ASSERT_EQ(s.events("branch_created").size(), 1u);
+    s.scan(5, {{500.0, 300.0}});
+    if (clutter < 1e-6) {
+      // THEN in sparse clutter one plot where it predicts confirms it, as M-of-N would
+      EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+      EXPECT_NEAR(s.track(1)->position.y(), 300.0, 30.0);
+      continue;
+    }
+    // THEN in the clutter area it is not confirmed yet (M-of-N would, on this one plot)
+    EXPECT_TRUE(s.events("branch_promoted").empty());
+    EXPECT_TRUE(s.associated(2, 501));
+    EXPECT_EQ(s.live_branches(), 1);
+    EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+  }
+}
+
 TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {
   // GIVEN the same script with branching off
   config::TrackingProfile profile = branch_profile();

@@ -31,7 +31,8 @@
 #   eval id changes / fragmentations   `skytrack eval` over the whole run (start-up included)
 #   number survives  exp. 2: the number on the target at t = 100 s (just before its 3
 #                    missed scans) is the one at t = 150 s (after the re-detection at
-#                    137.5 s); exp. 3: from t = 90 s (in the U-turn) to t = 150 s
+#                    137.5 s) and that track took a plot (association probability > 0.5)
+#                    in t = [135, 150] s; exp. 3: from t = 90 s (in the U-turn) to t = 150 s
 #   branch won       exp. 3: a branch_promoted event on that number in t = [100, 150] s
 set -euo pipefail
 
@@ -170,7 +171,12 @@ for scen in scenarios:
             runs_clean.append(run_changes == 0)
             if "exp2" in scen:  # before the 3 misses and after the re-detection at 137.5 s
                 a, b = numbers[at(truth, 100.0)], numbers[at(truth, 150.0)]
-                survive.append(a is not None and a == b)
+                # and back on its target: a plot of weight > 0.5 since then (a track that
+                # only coasted on along the target's straight line does not count)
+                took = any(x["track"] == a and x["probability"] > 0.5
+                           for f in tracks if 135.0 <= f["time"] <= 150.0
+                           for x in f["associations"])
+                survive.append(a is not None and a == b and took)
             if "exp3" in scen:  # in the U-turn and after the two-plot scan
                 a, b = numbers[at(truth, 90.0)], numbers[at(truth, 150.0)]
                 survive.append(a is not None and a == b)

@@ -21,6 +21,7 @@ enum class MotionModelType {
 enum class MeasurementUpdate { kEkf, kUnscented };
 enum class AssociationMethod { kJpda, kGnn };
 enum class ConfirmationMethod { kMOfN, kExistence };
+enum class NonManoeuvreGate { kUnion, kLastMotion };
 
 struct ProfileIdentity {
   std::string name;     // required; shown in logs, status and check-profile
@@ -162,12 +163,25 @@ struct BranchingSpec {
   // frame: the plots start its sons, which decide, while it is still reported. 1: never
   // (the father takes the likelier plot, rule 5).
   double ambiguity_beta = 0.3;
-  // A firm father that missed its last scan gates non-manoeuvre pairs on the motion it was
-  // last seen in: its likeliest mode at its latest detection, predicted without IMM mixing
-  // (which blends in the other modes' diverging predictions). Plots off that motion lie in
-  // its manoeuvre gate only and start sons (paper 003 §4.2). false: the union of all modes.
-  // Off by default: it helps in clutter (exp. 2) but costs exp. 1 turns (docs/branch-tracker.md).
+  // A firm father with no valid association in a scan (no plot likelier than its miss)
+  // coasts on the motion it was last seen in: its likeliest mode at its latest valid
+  // association, predicted alone (IMM mixing blends in the other modes' diverging
+  // predictions), and gates non-manoeuvre pairs on it; plots off that motion lie in its
+  // manoeuvre gate only and start sons (paper 003 §4.2), whose gate starts from its IMM's
+  // own coast. false: the IMM-JPDA update and the union of all modes' gates.
+  // Off by default: measured, it helps in clutter (exp. 2) but costs exp. 1 turns
+  // (docs/branch-tracker.md).
   bool coast_on_last_motion = false;
+  // A firm father's non-manoeuvre gate: union, the union of its IMM modes' gates; last_motion
+  // (needs coast_on_last_motion), its last motion's gate in every scan, not only after a
+  // miss (paper 003 §1: a non-manoeuvre association keeps the motion unchanged), so that a
+  // plot only a turn mode reaches starts a son instead of turning the father.
+  NonManoeuvreGate non_manoeuvre_gate = NonManoeuvreGate::kUnion;
+  // How a son or grandson started from a manoeuvre pair confirms (rule 10): m_of_n on one
+  // more plot (the paper's examples); existence as track_life does (IPDA), from
+  // track_life.initial_existence, weighing each later plot against the clutter density
+  // round it, so that a clutter area's plots confirm branches slowly.
+  ConfirmationMethod confirmation = ConfirmationMethod::kMOfN;
   int max_branches_per_father = 12;  // sons + grandsons of one father (3 + 9 at 3 children)
   int max_total_branches = 2000;     // in the whole tracker: bounds time and memory
   bool operator==(const BranchingSpec&) const = default;
@@ -250,6 +264,10 @@ constexpr std::string_view to_string(AssociationMethod method) {
 
 constexpr std::string_view to_string(ConfirmationMethod method) {
   return method == ConfirmationMethod::kMOfN ? "m_of_n" : "existence";
+}
+
+constexpr std::string_view to_string(NonManoeuvreGate gate) {
+  return gate == NonManoeuvreGate::kUnion ? "union" : "last_motion";
 }
 
 }  // namespace skytrack::config

@@ -85,9 +85,13 @@ struct PointTrack {
   // A son started from a plot chain (§3.3): confirmed on its existence, as the same chain
   // would be as a new track, not on plot counts.
   bool from_chain = false;
-  // Its estimate after its latest update that found its target (detection > 0.5), kept with
-  // branching.coast_on_last_motion: a firm father that missed since gates on that motion.
+  // Its estimate after its latest update with a valid association (a plot likelier than its
+  // miss), kept with branching.coast_on_last_motion: a firm father that missed since coasts
+  // and gates on that motion.
   std::optional<ImmEstimate> last_detected;
+  // While it holds its last motion: what its IMM would have coasted to since (the turns it
+  // may have started), from which its manoeuvre gate and sons start.
+  std::optional<ImmEstimate> coasted;
 };
 
 class PointTracker {
@@ -138,10 +142,17 @@ class PointTracker {
   /// True when a search region (centre, radius) reaches into the batch's coverage.
   bool covers_region(const PlotScan& scan, const Eigen::Vector3d& centre, double radius) const;
   void gate(const PlotScan& scan, double batch_mid, double half_span);
-  /// A firm father that missed since its last detection: its likeliest mode then, predicted
-  /// alone to `time` into `out` (the motion it was last seen in). False otherwise.
-  bool last_motion(const PointTrack& track, double time, Gaussian& out,
-                   bool missing_now = false) const;
+  /// branching.coast_on_last_motion is on (and branching).
+  bool holds_last_motion() const;
+  /// A missing father's estimate becomes its last motion's prediction; `coasted` keeps what
+  /// its IMM would have coasted to.
+  void hold_last_motion(PointTrack& track) const;
+  /// A firm father that missed since its last valid association (or any firm father, with
+  /// non_manoeuvre_gate last_motion): its likeliest mode then, predicted alone to `time` (the
+  /// motion it was last seen in), held by every mode at the modes' predicted probabilities.
+  /// Empty otherwise.
+  std::optional<ImmEstimate> last_motion(const PointTrack& track, double time,
+                                         bool missing_now = false) const;
   /// Radius of the region around `centre` holding g's gate at `threshold` (chi-square).
   double search_radius(const Gaussian& g, const Eigen::Vector3d& centre, double threshold,
                        const PlotScan& scan) const;
@@ -177,6 +188,8 @@ class PointTracker {
   void solve_kind(PairKind kind, ScanReport& report, TrackFrame& frame);
   /// The life rules of a branch: a chain-started son's are a new track's (existence).
   const config::TrackLifeSpec& life_of(const PointTrack& branch) const;
+  /// Whether a branch's existence is updated (chain sons; all with existence confirmation).
+  bool weighs_existence(const PointTrack& branch) const;
   /// A firm father not yet doomed, or doomed with fewer than delete_confirmed_misses misses.
   bool may_start_sons(const PointTrack& father) const;
   int recovery_misses() const;
@@ -265,7 +278,6 @@ class PointTracker {
   std::vector<int> suspended_at_gate_;      // fathers suspended on their prediction
   std::vector<ImmEstimate> predicted_;      // per track, at its update time
   std::vector<ImmEstimate> previous_;       // per track, before this batch (branching)
-  Gaussian last_motion_;                    // last_motion()'s result
   std::vector<std::uint8_t> has_previous_;  // previous_ holds this batch's prior
   struct LostFather {  // a suspended father and its manoeuvre gate's reach this batch
     int track = 0;
@@ -280,6 +292,7 @@ class PointTracker {
     std::vector<int> plots;
     std::vector<double> beta;
     double miss = 0.0;
+    std::optional<ImmEstimate> last_detected;  // before this update (coast_on_last_motion)
   };
   std::vector<PendingSplit> pending_splits_;
   struct ConfirmedSon {  // a son confirmed by its non-manoeuvre pair, awaiting promotion
