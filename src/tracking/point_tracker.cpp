@@ -496,7 +496,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   update_existence(track.life, likelihood_ratio, pd, profile_.association.gate_probability,
                    profile_.track_life);
   bool detected = detection > 0.5;
-  if (holds_last_motion()) {
+  if (holds_last_motion() && is_reported_as_firm(track.life.status)) {
     // branching.coast_on_last_motion: a father with no valid association (§2.2: no plot
     // likelier than its miss) coasts on the motion it was last seen in, however much its
     // plots weigh together; the turns it may have started are its sons' to find (§4.2).
