@@ -318,8 +318,7 @@ bool PointTracker::holds_last_motion() const {
 
 std::optional<ImmEstimate> PointTracker::last_motion(const PointTrack& track, double time,
                                                      bool missing_now) const {
-  if (!branching() || !profile_.branching.coast_on_last_motion ||
-      track.branch != BranchType::kFather || !track.last_detected ||
+  if (!holds_last_motion() || track.branch != BranchType::kFather || !track.last_detected ||
       !is_reported_as_firm(track.life.status) ||
       (track.life.consecutive_misses < 1 && !missing_now &&
        profile_.branching.non_manoeuvre_gate != config::NonManoeuvreGate::kLastMotion)) {
