@@ -267,14 +267,23 @@ BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingPro
   s.boolean("coast_on_last_motion", b.coast_on_last_motion);
   read_enum(s, "non_manoeuvre_gate", b.non_manoeuvre_gate,
             {NonManoeuvreGate::kUnion, NonManoeuvreGate::kLastMotion});
+  s.number("last_motion_accel_sigma", b.last_motion_accel_sigma, Range::non_negative());
   read_enum(s, "confirmation", b.confirmation,
             {ConfirmationMethod::kMOfN, ConfirmationMethod::kExistence});
+  s.integer("coast_sons", b.coast_sons, Range::non_negative());
+  s.number("coast_son_doubt", b.coast_son_doubt, kOpenUnit);
   s.integer("max_branches_per_father", b.max_branches_per_father, kAtLeastOne);
   s.integer("max_total_branches", b.max_total_branches, kAtLeastOne);
   s.finish();
 
   if (b.non_manoeuvre_gate == NonManoeuvreGate::kLastMotion && !b.coast_on_last_motion) {
     s.error("non_manoeuvre_gate", "last_motion needs coast_on_last_motion: true");
+  }
+  if (b.last_motion_accel_sigma > 0.0 && !b.coast_on_last_motion) {
+    s.error("last_motion_accel_sigma", "needs coast_on_last_motion: true");
+  }
+  if (b.coast_sons > 0 && !b.coast_on_last_motion) {
+    s.error("coast_sons", "coast sons need coast_on_last_motion: true");
   }
   // The manoeuvre gate is the wider of the two (paper 003 §1).
   if (b.manoeuvre_gate_probability < p.association.gate_probability) {

@@ -1,6 +1,7 @@
 #include "skytrack/tracking/branch_tree.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <utility>
 
 namespace skytrack {
@@ -21,11 +22,12 @@ void BranchTree::add_father(std::int64_t id) {
   nodes_[id] = BranchNode{};
 }
 
-void BranchTree::add_branch(std::int64_t id, std::int64_t parent) {
+void BranchTree::add_branch(std::int64_t id, std::int64_t parent, bool coast) {
   BranchNode& up = nodes_.at(parent);
   BranchNode node;
   node.type = up.type == BranchType::kFather ? BranchType::kSon : BranchType::kGrandson;
   node.parent = parent;
+  node.coast = coast;
   up.children.push_back(id);
   nodes_[id] = std::move(node);
   ++branches_;
@@ -33,8 +35,20 @@ void BranchTree::add_branch(std::int64_t id, std::int64_t parent) {
 
 bool BranchTree::can_branch(std::int64_t id, int max_children) const {
   const BranchNode* node = find(id);
-  return node != nullptr && node->type != BranchType::kGrandson &&
-         static_cast<int>(node->children.size()) < max_children;
+  if (node == nullptr || node->type == BranchType::kGrandson) return false;
+  const auto branches = std::count_if(node->children.begin(), node->children.end(),
+                                      [&](std::int64_t c) { return !nodes_.at(c).coast; });
+  return branches < max_children;
+}
+
+std::vector<std::int64_t> BranchTree::coast_sons(std::int64_t father) const {
+  std::vector<std::int64_t> out;
+  if (const BranchNode* node = find(father)) {
+    std::copy_if(node->children.begin(), node->children.end(), std::back_inserter(out),
+                 [&](std::int64_t c) { return nodes_.at(c).coast; });
+  }
+  std::sort(out.begin(), out.end());  // numbers grow with time: oldest first
+  return out;
 }
 
 const BranchNode* BranchTree::find(std::int64_t id) const {
@@ -71,6 +85,10 @@ void BranchTree::release_branches(std::int64_t father, std::vector<BranchChange>
   const std::vector<std::int64_t> sons = std::exchange(it->second.children, {});
   for (const std::int64_t son : sons) {
     BranchNode& node = nodes_.at(son);
+    if (node.coast) {  // the alternative to this very update
+      it->second.children.push_back(son);
+      continue;
+    }
     // Every grandson goes; a son with a non-manoeuvre update of its own lives on as a father.
     const std::vector<std::int64_t> grandsons = std::exchange(node.children, {});
     for (const std::int64_t grandson : grandsons) erase_subtree(grandson, father, out);
@@ -108,6 +126,9 @@ void BranchTree::promote(std::int64_t branch, std::vector<BranchChange>& out) {
   nodes_.erase(branch);
   promoted.type = BranchType::kFather;
   promoted.parent = 0;
+  promoted.coast = false;
+  // The father's coast sons (their parent is the number, which the promoted branch keeps).
+  for (const std::int64_t son : nodes_.at(father).children) promoted.children.push_back(son);
   nodes_[father] = std::move(promoted);
   --branches_;
 }

@@ -105,17 +105,31 @@ Expected<PointTracker> PointTracker::create(const config::TrackingProfile& profi
   if (!filter) return unexpected(filter.error());
   auto manoeuvre = manoeuvre_filter(profile, *filter);
   if (!manoeuvre) return unexpected(manoeuvre.error());
+  // A held last motion's models: the IMM's, with at most last_motion_accel_sigma of noise.
+  std::optional<ImmFilter> hold;
+  if (const double sigma = profile.branching.last_motion_accel_sigma;
+      profile.branching.enabled && sigma > 0.0) {
+    config::TrackingProfile held = profile;
+    for (config::MotionModelSpec& m : held.motion_models) {
+      m.accel_sigma = std::min(m.accel_sigma, sigma);
+    }
+    auto made = ImmFilter::from_profile(held, dims);
+    if (!made) return unexpected(made.error());
+    hold = std::move(*made);
+  }
   const StateLayout layout = filter->layout();
-  return PointTracker(profile, layout, std::move(*filter), std::move(*manoeuvre));
+  return PointTracker(profile, layout, std::move(*filter), std::move(*manoeuvre), std::move(hold));
 }
 
 PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout layout,
-                           ImmFilter filter, std::optional<ImmFilter> manoeuvre)
+                           ImmFilter filter, std::optional<ImmFilter> manoeuvre,
+                           std::optional<ImmFilter> hold)
     : profile_(profile),
       branch_life_(branch_life(profile)),
       layout_(layout),
       filter_(std::move(filter)),
       manoeuvre_(std::move(manoeuvre)),
+      hold_(std::move(hold)),
       initiator_(profile.initiation, layout.dims),
       clutter_(profile.clutter_rejection),
       jpda_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
@@ -318,9 +332,11 @@ bool PointTracker::holds_last_motion() const {
 
 std::optional<ImmEstimate> PointTracker::last_motion(const PointTrack& track, double time,
                                                      bool missing_now) const {
-  if (!holds_last_motion() || track.branch != BranchType::kFather || !track.last_detected ||
-      !is_reported_as_firm(track.life.status) ||
-      (track.life.consecutive_misses < 1 && !missing_now &&
+  // A coast son always holds its father's last motion (branching.coast_sons).
+  const bool firm_father =
+      track.branch == BranchType::kFather && is_reported_as_firm(track.life.status);
+  if (!holds_last_motion() || !track.last_detected || !(firm_father || track.coast_son) ||
+      (!track.coast_son && track.life.consecutive_misses < 1 && !missing_now &&
        profile_.branching.non_manoeuvre_gate != config::NonManoeuvreGate::kLastMotion)) {
     return std::nullopt;
   }
@@ -332,7 +348,7 @@ std::optional<ImmEstimate> PointTracker::last_motion(const PointTrack& track, do
   for (Gaussian& m : one.modes) m = one.modes[static_cast<std::size_t>(kept)];
   one.probabilities.setZero();
   one.probabilities[kept] = 1.0;
-  ImmEstimate predicted = filter_.predict(one, std::max(time, one.time));
+  ImmEstimate predicted = (hold_ ? *hold_ : filter_).predict(one, std::max(time, one.time));
   for (Gaussian& m : predicted.modes) m = predicted.modes[static_cast<std::size_t>(kept)];
   return predicted;
 }

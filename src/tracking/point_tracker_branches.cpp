@@ -99,7 +99,8 @@ const config::TrackLifeSpec& PointTracker::life_of(const PointTrack& branch) con
 }
 
 bool PointTracker::weighs_existence(const PointTrack& branch) const {
-  return branch.from_chain || branch_life_.confirmation == config::ConfirmationMethod::kExistence;
+  return branch.from_chain || branch.coast_son ||
+         branch_life_.confirmation == config::ConfirmationMethod::kExistence;
 }
 
 int PointTracker::recovery_misses() const {
@@ -149,6 +150,8 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   // §2.1 (1), (3): the non-manoeuvre kinds; the fathers' kind also updates the fathers.
   claimed_by_.assign(plots_.size(), -1);
   pending_splits_.clear();
+  doubtful_.clear();
+  if (profile_.branching.coast_sons > 0) motion_before_.assign(tracks_.size(), std::nullopt);
   solve_kind(PairKind::kFatherNonManoeuvre, report, frame);
   split_undecided_fathers(frame);
   solve_kind(PairKind::kSonNonManoeuvre, report, frame);
@@ -167,6 +170,7 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
       continue;
     }
     if (track.branch == BranchType::kFather && !may_start_sons(track)) continue;
+    if (track.coast_son) continue;  // the father's last motion only: it does not branch
     gate_manoeuvre(scan, static_cast<int>(t), track.branch == BranchType::kGrandson);
   }
   // §2.1 (2), (3): the manoeuvre kinds.
@@ -200,6 +204,9 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
                            ambiguous(beta, miss, profile_.branching.ambiguity_beta);
         std::optional<ImmEstimate> last_detected;
         if (split && holds_last_motion()) last_detected = tracks_[t].last_detected;
+        if (kind == PairKind::kFatherNonManoeuvre && profile_.branching.coast_sons > 0) {
+          motion_before_[static_cast<std::size_t>(t)] = tracks_[t].last_detected;
+        }
         if (kind == PairKind::kFatherNonManoeuvre) update_father(t, mine, beta, miss, frame);
         // A doomed father takes no non-manoeuvre pair but may start sons, so that a
         // branch can still keep its number.
@@ -404,6 +411,7 @@ void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
               name(BranchType::kFather, father.id) + " took plot " +
                   std::to_string(plots_[pair.plot].plot_id) + " (rule 5)",
               report, frame);
+        note_doubtful_update(pair);
         break;
       }
       case PairKind::kSonNonManoeuvre:    // §2.3 (2), rules 8 and 10
@@ -417,6 +425,84 @@ void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
     }
   }
   if (!sons_promoted) promote_confirmed_sons(report, frame);
+  start_coast_sons(report, frame);
+}
+
+void PointTracker::note_doubtful_update(const BranchPair& pair) {
+  if (profile_.branching.coast_sons == 0 || pair.candidate < 0) return;
+  const PointTrack& father = tracks_[pair.track];
+  if (father.doomed || !is_reported_as_firm(father.life.status)) return;
+  // The plot's density as clutter against its density as the father's target (detected):
+  // about 0.2 for a target's plot inside paper003_exp2's clutter area, 1e-4 outside it.
+  const double clutter = clutter_density(plots_[pair.plot], pair.plot);
+  const double target = profile_.association.detection_probability *
+                        candidates_[static_cast<std::size_t>(pair.candidate)].likelihood;
+  const double doubt = clutter / (clutter + target);
+  if (!(doubt >= profile_.branching.coast_son_doubt)) return;
+  doubtful_.push_back({pair.track, doubt, plots_[pair.plot].plot_id});
+}
+
+void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
+  const int most = profile_.branching.coast_sons;
+  for (const DoubtfulUpdate& d : doubtful_) {
+    const PointTrack& father = tracks_[d.track];
+    const std::optional<ImmEstimate>& before = motion_before_[static_cast<std::size_t>(d.track)];
+    if (father.branch != BranchType::kFather || father.replaced || father.doomed ||
+        father.life.status == TrackStatus::kDeleted || !before) {
+      continue;
+    }
+    const std::int64_t father_id = father.id;
+    const double quality = father.quality;
+    const double score = father.score + log_of(d.doubt);
+    const std::string plot = std::to_string(d.plot_id);
+    // Room: the oldest coast son that took no plot in this batch goes.
+    const std::vector<std::int64_t> sons = tree_.coast_sons(father_id);
+    if (static_cast<int>(sons.size()) >= most) {
+      const auto oldest = std::find_if(sons.begin(), sons.end(), [&](std::int64_t id) {
+        const int i = slot(id);
+        return i >= 0 && touched_[static_cast<std::size_t>(i)] == 0;
+      });
+      if (oldest == sons.end()) continue;
+      changes_.clear();
+      tree_.remove(*oldest, changes_);
+      apply(changes_, "the oldest of coast_sons " + std::to_string(most), report, frame);
+    }
+    if (!make_room(father_id, father_id, score, d.plot_id, report, frame)) continue;
+    PointTrack son;
+    son.id = next_id_++;
+    son.branch = BranchType::kSon;
+    son.coast_son = true;
+    son.life.scans = 1;
+    son.life.consecutive_misses = 1;  // this look: the target missed, the plot a false alarm
+    son.life.existence = std::clamp(d.doubt, profile_.track_life.initial_existence,
+                                    profile_.track_life.confirm_existence);
+    son.last_detected = before;
+    son.estimate = *last_motion(son, frame.time, true);
+    son.quality = quality;
+    son.score = score;
+    tree_.add_branch(son.id, father_id, true);
+    add_event(frame, "branch_created", father_id,
+              name(BranchType::kSon, son.id) + " of " + name(BranchType::kFather, father_id) +
+                  ": its last motion before plot " + plot + " (coast son, doubt " +
+                  std::to_string(d.doubt).substr(0, 4) + ")");
+    ++report.branches_created;
+    slots_[son.id] = static_cast<int>(tracks_.size());
+    tracks_.push_back(std::move(son));
+    touched_.push_back(1);
+  }
+  doubtful_.clear();
+}
+
+bool PointTracker::age_coast_son(PointTrack& son, double time) {
+  son.life.history <<= 1;
+  ++son.life.scans;
+  ++son.life.consecutive_misses;
+  if (std::optional<ImmEstimate> held = last_motion(son, time, true)) {
+    son.estimate = std::move(*held);
+  }
+  return son.life.consecutive_misses < profile_.track_life.delete_confirmed_misses &&
+         position_spread(son.estimate.modes.front(), layout_.dims) <=
+             profile_.track_life.delete_position_sigma;
 }
 
 bool PointTracker::of_undecided_father(std::int64_t son) const {
@@ -614,8 +700,19 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
         touched_[i] != 0 || (i < covered_.size() && covered_[i] == 0)) {
       continue;
     }
-    branch.estimate = filter_.predict(branch.estimate, std::max(frame.time, branch.estimate.time));
     branch.score += miss;
+    if (branch.coast_son) {
+      if (!age_coast_son(branch, frame.time)) {
+        changes_.clear();
+        tree_.remove(branch.id, changes_);
+        apply(changes_,
+              "no plot in delete_confirmed_misses (" +
+                  std::to_string(profile_.track_life.delete_confirmed_misses) + ") looks",
+              report, frame);
+      }
+      continue;
+    }
+    branch.estimate = filter_.predict(branch.estimate, std::max(frame.time, branch.estimate.time));
     const double spread = mode_spread(branch.estimate, layout_.dims);
     if (weighs_existence(branch)) {
       update_existence(branch.life, 0.0, profile_.association.detection_probability,
@@ -820,6 +917,7 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
           track.quality = old.quality;
         }
         track.branch = BranchType::kFather;
+        track.coast_son = false;
         track.id = change.father;
         slots_.erase(change.track);
         slots_[change.father] = i;

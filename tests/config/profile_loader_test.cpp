@@ -343,6 +343,28 @@ TEST(ProfileLoader, LastMotionGateNeedsCoastOnLastMotion) {
               ::testing::HasSubstr("branching.non_manoeuvre_gate"));
 }
 
+TEST(ProfileLoader, CoastSonsAndTheHeldMotionsNoiseNeedCoastOnLastMotion) {
+  const auto profile = parse_profile(
+      "profile: {name: p, version: '1'}\n"
+      "branching: {coast_on_last_motion: true, coast_sons: 3, coast_son_doubt: 0.2,\n"
+      "            last_motion_accel_sigma: 0.5}\n",
+      "p.yaml");
+  ASSERT_TRUE(profile) << profile.error().message;
+  EXPECT_EQ(profile->branching.coast_sons, 3);
+  EXPECT_DOUBLE_EQ(profile->branching.coast_son_doubt, 0.2);
+  EXPECT_DOUBLE_EQ(profile->branching.last_motion_accel_sigma, 0.5);
+  EXPECT_EQ(TrackingProfile{}.branching.coast_sons, 0);
+  EXPECT_DOUBLE_EQ(TrackingProfile{}.branching.last_motion_accel_sigma, 0.0);
+  EXPECT_THAT(error_of("branching:\n  coast_sons: 1\n"),
+              ::testing::HasSubstr("coast sons need coast_on_last_motion: true"));
+  EXPECT_THAT(error_of("branching:\n  last_motion_accel_sigma: 0.5\n"),
+              ::testing::HasSubstr("needs coast_on_last_motion: true"));
+  EXPECT_THAT(error_of("branching:\n  coast_sons: -1\n"),
+              ::testing::HasSubstr("branching.coast_sons"));
+  EXPECT_THAT(error_of("branching:\n  coast_son_doubt: 0\n"),
+              ::testing::HasSubstr("branching.coast_son_doubt"));
+}
+
 TEST(ProfileLoader, BranchConfirmationIsMOfNOrExistence) {
   const auto profile = parse_profile(
       "profile: {name: p, version: '1'}\nbranching: {confirmation: existence}\n", "p.yaml");

@@ -717,6 +717,48 @@ TEST(BranchTracker, SonConfirmedOnExistenceWeighsItsPlotsAgainstTheClutter) {
   }
 }
 
+TEST(BranchTracker, CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather) {
+  // GIVEN confirmed track 1 flying straight east in a clutter area of 100 false plots per
+  // km^2, with branching.coast_sons: its target is missed at t = 4 and 5, and at t = 6 a
+  // false plot 60 m left of its line lies in its gate, widened by the misses
+  config::TrackingProfile profile = branch_profile();
+  profile.track_life.confirmation = config::ConfirmationMethod::kMOfN;
+  profile.association.clutter_density = 1e-4;
+  profile.branching.coast_on_last_motion = true;
+  profile.branching.confirmation = config::ConfirmationMethod::kExistence;
+  profile.branching.coast_sons = 3;
+  Script s(profile);
+  s.start();
+  s.scan(4, {});
+  s.scan(5, {});
+  s.scan(6, {{600.0, 60.0}});
+  // THEN the father takes it (rule 5), and as the plot may be a false alarm (its clutter
+  // density is close to its density under the track) its last motion stays as coast son 2
+  ASSERT_TRUE(s.associated(1, 601));
+  const std::vector<std::string> created = s.events("branch_created");
+  ASSERT_EQ(created.size(), 1u);
+  EXPECT_EQ(created[0].rfind("1: son 2 of track 1: its last motion before plot 601 (coast son", 0),
+            0u);
+  // WHEN the target returns on its straight line, with a false plot further left each time
+  std::vector<std::string> promoted;
+  for (const int t : {7, 8}) {
+    s.scan(t, {{100.0 * t, 0.0}, {100.0 * t, 60.0 + 15.0 * (t - 6)}});
+    if (t == 7) {  // THEN the father weighs the false plot too, the coast son the target's
+      EXPECT_TRUE(s.associated(1, 702));
+      EXPECT_TRUE(s.associated(2, 701));
+    }
+    const std::vector<std::string> now = s.events("branch_promoted");
+    promoted.insert(promoted.end(), now.begin(), now.end());
+  }
+  // THEN the coast son, confirmed on its existence, replaces the father under number 1
+  // (rule 10), back on the target
+  ASSERT_EQ(promoted.size(), 1u);
+  EXPECT_EQ(promoted[0].rfind("1: son 2 of track 1 replaces track 1", 0), 0u);
+  ASSERT_NE(s.track(1), nullptr);
+  EXPECT_NEAR(s.track(1)->position.x(), 800.0, 20.0);
+  EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
+}
+
 TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {
   // GIVEN the same script with branching off
   config::TrackingProfile profile = branch_profile();

@@ -138,6 +138,42 @@ TEST(BranchTree, ConfirmedGrandsonReplacesTheFatherAndItsOwnSonIsCleanedUp) {
   EXPECT_EQ(tree.total_branches(), 0);
 }
 
+TEST(BranchTree, CoastSonOutlivesTheFathersUpdatesAndFollowsAPromotedSibling) {
+  // GIVEN the family above with coast son 6 of father 1 (branching.coast_sons)
+  BranchTree tree = family();
+  tree.add_branch(6, 1, /*coast=*/true);
+  // THEN it does not take one of max_children (two sons: full at 2, not at 3)
+  EXPECT_FALSE(tree.can_branch(1, 2));
+  EXPECT_TRUE(tree.can_branch(1, 3));
+  EXPECT_EQ(tree.coast_sons(1), (std::vector<std::int64_t>{6}));
+  // WHEN the father takes a non-manoeuvre association (rule 5)
+  std::vector<BranchChange> changes;
+  tree.release_branches(1, changes);
+  // THEN sons 2, 3 and their grandsons go, the coast son (the alternative to that very
+  // update) stays
+  EXPECT_FALSE(has(changes, Kind::kPruned, 6));
+  EXPECT_TRUE(has(changes, Kind::kPruned, 2));
+  EXPECT_EQ(tree.find(1)->children, (std::vector<std::int64_t>{6}));
+  // WHEN a new son 7 is confirmed and replaces the father
+  tree.add_branch(7, 1);
+  changes.clear();
+  tree.promote(7, changes);
+  // THEN the coast son is the promoted branch's, under the father's number
+  EXPECT_TRUE(has(changes, Kind::kPromoted, 7));
+  EXPECT_FALSE(has(changes, Kind::kPruned, 6));
+  EXPECT_EQ(tree.find(1)->children, (std::vector<std::int64_t>{6}));
+  EXPECT_EQ(tree.father_of(6), 1);
+  EXPECT_EQ(tree.total_branches(), 1);
+  // WHEN the coast son itself is confirmed: it replaces the father and is a father
+  changes.clear();
+  tree.promote(6, changes);
+  EXPECT_TRUE(has(changes, Kind::kPromoted, 6));
+  EXPECT_EQ(tree.find(1)->type, BranchType::kFather);
+  EXPECT_FALSE(tree.find(1)->coast);
+  EXPECT_TRUE(tree.find(1)->children.empty());
+  EXPECT_EQ(tree.total_branches(), 0);
+}
+
 TEST(BranchTree, RemovingANodeTakesItsSubtree) {
   BranchTree tree = family();
   std::vector<BranchChange> changes;

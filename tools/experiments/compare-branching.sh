@@ -33,6 +33,10 @@
 #                    missed scans) is the one at t = 150 s (after the re-detection at
 #                    137.5 s) and that track took a plot (association probability > 0.5)
 #                    in t = [135, 150] s; exp. 3: from t = 90 s (in the U-turn) to t = 150 s
+#   survives the area  exp. 2: that number is on the target at t = 180 s, after it left the
+#                    clutter area (at 152 s), and its track took a plot (association
+#                    probability > 0.5) in t = [155, 180] s: the number came back to the
+#                    target later, if not at the re-detection
 #   branch won       exp. 3: a branch_promoted event on that number in t = [100, 150] s
 set -euo pipefail
 
@@ -152,6 +156,7 @@ rows = []
 for scen in scenarios:
     for mode in ("on", "off"):
         ids, frags, changes, gaps, clean, runs_clean, survive, won = [], [], [], [], [], [], [], []
+        later = []
         for seed in seeds:
             base = f"{out}/{scen}.{seed}"
             score = json.load(open(f"{base}.{mode}.eval.json"))
@@ -173,10 +178,13 @@ for scen in scenarios:
                 a, b = numbers[at(truth, 100.0)], numbers[at(truth, 150.0)]
                 # and back on its target: a plot of weight > 0.5 since then (a track that
                 # only coasted on along the target's straight line does not count)
-                took = any(x["track"] == a and x["probability"] > 0.5
-                           for f in tracks if 135.0 <= f["time"] <= 150.0
-                           for x in f["associations"])
-                survive.append(a is not None and a == b and took)
+                def took(since, until):
+                    return any(x["track"] == a and x["probability"] > 0.5
+                               for f in tracks if since <= f["time"] <= until
+                               for x in f["associations"])
+                survive.append(a is not None and a == b and took(135.0, 150.0))
+                later.append(a is not None and a == numbers[at(truth, 180.0)]
+                             and took(155.0, 180.0))
             if "exp3" in scen:  # in the U-turn and after the two-plot scan
                 a, b = numbers[at(truth, 90.0)], numbers[at(truth, 150.0)]
                 survive.append(a is not None and a == b)
@@ -185,16 +193,18 @@ for scen in scenarios:
                                for f in tracks for e in f["events"]))
         rows.append((scen, mode, mean(changes), mean(gaps), pct(clean), pct(runs_clean),
                      mean(ids), mean(frags),
-                     pct(survive) if survive else None, pct(won) if won else None))
+                     pct(survive) if survive else None, pct(later) if later else None,
+                     pct(won) if won else None))
 
 print(f"Seeds {first}-{first + count - 1}: {count} runs per scenario and tracker. Per target, "
       f"from its first firm track on (within {GATE:.0f} m):\n")
 print("| scenario | branching | number changes / target | scans lost / target | "
       "targets without number change % | runs without number change % | eval id changes / "
-      "target | eval fragmentations / target | number survives % | branch won % |")
-print("|---|---|---|---|---|---|---|---|---|---|")
-for scen, mode, ch, gp, cl, rc, ids, fr, sv, wn in rows:
+      "target | eval fragmentations / target | number survives % | survives the area % | "
+      "branch won % |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
+for scen, mode, ch, gp, cl, rc, ids, fr, sv, la, wn in rows:
     cell = lambda v: "—" if v is None else f"{v:.0f}"
     print(f"| {scen} | {mode} | {ch:.2f} | {gp:.2f} | {cl:.0f} | {rc:.0f} | {ids:.2f} | {fr:.2f} | "
-          f"{cell(sv)} | {cell(wn)} |")
+          f"{cell(sv)} | {cell(la)} | {cell(wn)} |")
 PY

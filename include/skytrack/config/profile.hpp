@@ -177,11 +177,26 @@ struct BranchingSpec {
   // miss (paper 003 §1: a non-manoeuvre association keeps the motion unchanged), so that a
   // plot only a turn mode reaches starts a son instead of turning the father.
   NonManoeuvreGate non_manoeuvre_gate = NonManoeuvreGate::kUnion;
+  // [m/s^2] White acceleration of a held last motion (its gate and its coast), at most each
+  // model's own accel_sigma; 0: the model's own. A motion held unchanged over missed looks
+  // spreads along the range, which the radar measures to tens of metres, by the model's
+  // noise alone (2 m/s^2: 290 m after 40 s), and a wider gate holds more false alarms.
+  double last_motion_accel_sigma = 0.0;
   // How a son or grandson started from a manoeuvre pair confirms (rule 10): m_of_n on one
   // more plot (the paper's examples); existence as track_life does (IPDA), from
   // track_life.initial_existence, weighing each later plot against the clutter density
   // round it, so that a clutter area's plots confirm branches slowly.
   ConfirmationMethod confirmation = ConfirmationMethod::kMOfN;
+  // Coast sons (needs coast_on_last_motion; 0: none): when a firm father takes a plot that
+  // may be a false alarm (its clutter density is at least coast_son_doubt of the plot's
+  // density under the father and the clutter together), its last motion before that plot
+  // stays as a hidden son that rule 5 does not cut: the hypothesis that its target was
+  // missed. It coasts and gates on that motion, takes non-manoeuvre pairs, is confirmed as
+  // `confirmation` says (existence from the doubt) and then replaces the father. At most
+  // this many per father (the oldest untouched goes); deleted after
+  // track_life.delete_confirmed_misses misses in a row.
+  int coast_sons = 0;
+  double coast_son_doubt = 0.1;
   int max_branches_per_father = 12;  // sons + grandsons of one father (3 + 9 at 3 children)
   int max_total_branches = 2000;     // in the whole tracker: bounds time and memory
   bool operator==(const BranchingSpec&) const = default;

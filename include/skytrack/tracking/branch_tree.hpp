@@ -29,6 +29,10 @@ struct BranchNode {
   std::int64_t parent = 0;             // number of the parent; 0 for a father
   std::vector<std::int64_t> children;  // sons of a father, grandsons of a son
   bool non_manoeuvre_updated = false;  // a non-manoeuvre update since its birth
+  // A coast son (branching.coast_sons): its father's motion before a doubtful plot. Not a
+  // paper 003 branch: it is the alternative to the father's own updates, so rule 5 keeps
+  // it, a promoted sibling inherits it, and it does not take one of max_children.
+  bool coast = false;
 };
 
 /// One decision about one branch.
@@ -48,10 +52,14 @@ struct BranchChange {
 class BranchTree {
  public:
   void add_father(std::int64_t id);
-  /// Adds a son under a father or a grandson under a son. Requires can_branch(parent).
-  void add_branch(std::int64_t id, std::int64_t parent);
-  /// A father or a son below max_children children (grandsons never branch, §1 (1)).
+  /// Adds a son under a father or a grandson under a son. Requires can_branch(parent), or
+  /// a father for a coast son.
+  void add_branch(std::int64_t id, std::int64_t parent, bool coast = false);
+  /// A father or a son below max_children children besides coast sons (grandsons never
+  /// branch, §1 (1)).
   bool can_branch(std::int64_t id, int max_children) const;
+  /// The coast sons of a father, oldest first.
+  std::vector<std::int64_t> coast_sons(std::int64_t father) const;
 
   const BranchNode* find(std::int64_t id) const;
   bool contains(std::int64_t id) const { return find(id) != nullptr; }
@@ -64,13 +72,13 @@ class BranchTree {
 
   void mark_non_manoeuvre_update(std::int64_t id);
 
-  /// §1 (5), §2.3 (1): the father took a non-manoeuvre association.
+  /// §1 (5), §2.3 (1): the father took a non-manoeuvre association. Coast sons stay.
   void release_branches(std::int64_t father, std::vector<BranchChange>& out);
   /// §1 (8): the son took a non-manoeuvre association; its grandsons go.
   void prune_children(std::int64_t son, std::vector<BranchChange>& out);
   /// §1 (10), §2.3 (2)-(3): the confirmed branch replaces its father. Emits kPromoted for
   /// the branch first, then the clean-up of the father's other branches as in (5). Afterwards
-  /// the branch is a father under the father's number.
+  /// the branch is a father under the father's number, with the father's coast sons.
   void promote(std::int64_t branch, std::vector<BranchChange>& out);
   /// Deletes a node and everything below it (a branch that died, a father deleted, a cap).
   /// Emits kPruned for every branch removed (not for a father).

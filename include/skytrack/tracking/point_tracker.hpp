@@ -92,6 +92,10 @@ struct PointTrack {
   // While it holds its last motion: what its IMM would have coasted to since (the turns it
   // may have started), from which its manoeuvre gate and sons start.
   std::optional<ImmEstimate> coasted;
+  // A coast son (branching.coast_sons): its father's last motion before a plot that may have
+  // been a false alarm; it holds and gates on that motion (last_detected) until it takes
+  // plots of its own.
+  bool coast_son = false;
 };
 
 class PointTracker {
@@ -109,7 +113,7 @@ class PointTracker {
 
  private:
   PointTracker(const config::TrackingProfile& profile, StateLayout layout, ImmFilter filter,
-               std::optional<ImmFilter> manoeuvre);
+               std::optional<ImmFilter> manoeuvre, std::optional<ImmFilter> hold);
 
   struct Candidate {  // a gated track-plot pair
     int track = 0;
@@ -212,6 +216,13 @@ class PointTracker {
   void promote_confirmed_sons(ScanReport& report, TrackFrame& frame);
   bool of_undecided_father(std::int64_t son) const;
   void create_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame);
+  /// branching.coast_sons: notes father `t`'s non-manoeuvre pair when its plot may be a false
+  /// alarm; start_coast_sons starts the coast sons once this batch's sons took their pairs.
+  void note_doubtful_update(const BranchPair& pair);
+  void start_coast_sons(ScanReport& report, TrackFrame& frame);
+  /// A coast son that took no plot: holds its last motion; deleted after
+  /// delete_confirmed_misses misses in a row: false when it is to be deleted.
+  bool age_coast_son(PointTrack& son, double time);
   /// A son's start: its father's prediction through the manoeuvre models, updated by `plot`.
   ImmEstimate son_start(int father, const PlotMeasurement& plot) const;
   /// Frees a place under the caps for a branch of `father` scoring `score`; false if the new
@@ -253,6 +264,7 @@ class PointTracker {
   StateLayout layout_;
   ImmFilter filter_;
   std::optional<ImmFilter> manoeuvre_;  // the manoeuvre gate's models; set when branching
+  std::optional<ImmFilter> hold_;       // a held last motion's (last_motion_accel_sigma)
   Eigen::VectorXd manoeuvre_start_;     // their probabilities at a gate's start (uniform)
   Initiator initiator_;
   clutter::ClutterRejector clutter_;
@@ -301,6 +313,14 @@ class PointTracker {
     std::int64_t plot_id = 0;
   };
   std::vector<ConfirmedSon> confirmed_sons_;
+  std::vector<std::optional<ImmEstimate>> motion_before_;  // per track: last_detected before
+                                                           // its update (coast sons)
+  struct DoubtfulUpdate {  // a father's non-manoeuvre pair whose plot may be a false alarm
+    int track = 0;
+    double doubt = 0.0;  // the plot's clutter density over its density under track + clutter
+    std::int64_t plot_id = 0;
+  };
+  std::vector<DoubtfulUpdate> doubtful_;
   std::vector<int> claimed_by_;  // per plot: the father whose likeliest it is; -1 none, -2 several
   std::vector<Sphere> mode_reach_;               // gate_manoeuvre's models' regions
   std::vector<Candidate> candidates_;            // non-manoeuvre gates
