@@ -268,10 +268,12 @@ BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingPro
   read_enum(s, "non_manoeuvre_gate", b.non_manoeuvre_gate,
             {NonManoeuvreGate::kUnion, NonManoeuvreGate::kLastMotion});
   s.number("last_motion_accel_sigma", b.last_motion_accel_sigma, Range::non_negative());
+  s.number("last_motion_false_plots", b.last_motion_false_plots, Range::non_negative());
   read_enum(s, "confirmation", b.confirmation,
             {ConfirmationMethod::kMOfN, ConfirmationMethod::kExistence});
   s.integer("coast_sons", b.coast_sons, Range::non_negative());
   s.number("coast_son_doubt", b.coast_son_doubt, kOpenUnit);
+  s.integer("coast_son_looks", b.coast_son_looks, Range::non_negative());
   s.integer("max_branches_per_father", b.max_branches_per_father, kAtLeastOne);
   s.integer("max_total_branches", b.max_total_branches, kAtLeastOne);
   s.finish();
@@ -284,6 +286,12 @@ BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingPro
   }
   if (b.coast_sons > 0 && !b.coast_on_last_motion) {
     s.error("coast_sons", "coast sons need coast_on_last_motion: true");
+  }
+  if (b.last_motion_false_plots > 0.0 && !b.coast_on_last_motion) {
+    s.error("last_motion_false_plots", "needs coast_on_last_motion: true");
+  }
+  if (b.coast_son_looks > 0 && b.coast_sons == 0) {
+    s.error("coast_son_looks", "needs coast_sons > 0");
   }
   // The manoeuvre gate is the wider of the two (paper 003 §1).
   if (b.manoeuvre_gate_probability < p.association.gate_probability) {

@@ -111,7 +111,7 @@ void BranchTree::prune_children(std::int64_t son, std::vector<BranchChange>& out
   for (const std::int64_t grandson : grandsons) erase_subtree(grandson, father, out);
 }
 
-void BranchTree::promote(std::int64_t branch, std::vector<BranchChange>& out) {
+void BranchTree::promote(std::int64_t branch, std::vector<BranchChange>& out, bool split) {
   const BranchNode* node = find(branch);
   if (node == nullptr || node->type == BranchType::kFather) return;
   const std::int64_t father = father_of(branch);
@@ -127,8 +127,17 @@ void BranchTree::promote(std::int64_t branch, std::vector<BranchChange>& out) {
   promoted.type = BranchType::kFather;
   promoted.parent = 0;
   promoted.coast = false;
-  // The father's coast sons (their parent is the number, which the promoted branch keeps).
-  for (const std::int64_t son : nodes_.at(father).children) promoted.children.push_back(son);
+  // The father's coast sons (their parent is the number, which the promoted branch keeps);
+  // of a branch split from the father, only those that split before it: the later ones
+  // split from the father's updates that the promotion rejects.
+  const std::vector<std::int64_t> coast = std::exchange(nodes_.at(father).children, {});
+  for (const std::int64_t son : coast) {
+    if (!split || son < branch) {
+      promoted.children.push_back(son);
+    } else {
+      erase_subtree(son, father, out);
+    }
+  }
   nodes_[father] = std::move(promoted);
   --branches_;
 }

@@ -234,6 +234,9 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   index_.build(positions_, layout_.dims);
   candidates_.clear();
   manoeuvre_candidates_.clear();
+  // branching.last_motion_false_plots weighs the clutter round each plot while gating: from
+  // all of this batch's plots (associate_branches re-estimates it from the ungated ones).
+  if (branching() && profile_.branching.last_motion_false_plots > 0.0) estimate_clutter_density();
   batch_mid_ = batch_mid;
   half_span_ = half_span;
   predicted_.resize(tracks_.size());
@@ -257,6 +260,7 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     }
   }
   covered_.assign(tracks_.size(), 1);
+  dense_.assign(tracks_.size(), profile_.branching.last_motion_false_plots > 0.0 ? 0 : 1);
   suspended_at_gate_.clear();
   const double widest = gate_threshold_[kMaxMeasurementDim];
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
@@ -298,14 +302,21 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     predicted_[t] = filter_.predict(estimate, std::max(nearest_time(centre), estimate.time));
     if (!non_manoeuvre) continue;
     const std::optional<ImmEstimate> narrowed = last_motion(track, predicted_[t].time);
+    // branching.last_motion_false_plots: the clutter is weighed in the last motion's gate,
+    // whether or not the father gates on it in this look.
+    const bool weighs_clutter = profile_.branching.last_motion_false_plots > 0.0;
+    const std::optional<ImmEstimate> held =
+        narrowed || !weighs_clutter ? narrowed : last_motion(track, predicted_[t].time, true);
     for (const int j : neighbours_) {
       PlotHypothesis hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
       if (!hypothesis.usable) continue;
       double nis = hypothesis.min_nis;
-      if (narrowed) {
+      if (held) {
         const Innovation in =
-            innovate(narrowed->modes.front(), layout_, plots_[j], profile_.measurement);
-        nis = in.ok ? in.nis : std::numeric_limits<double>::infinity();
+            innovate(held->modes.front(), layout_, plots_[j], profile_.measurement);
+        const bool dense = !weighs_clutter || (in.ok && in_dense_clutter(in, j));
+        if (dense) dense_[t] = 1;
+        if (narrowed && dense) nis = in.ok ? in.nis : std::numeric_limits<double>::infinity();
       }
       // A plot inside any mode's gate (the union of the modes' gates), or a coasting father's
       // last motion's gate (branching.coast_on_last_motion), is a candidate.
@@ -328,6 +339,17 @@ void PointTracker::hold_last_motion(PointTrack& track) const {
 
 bool PointTracker::holds_last_motion() const {
   return branching() && profile_.branching.coast_on_last_motion;
+}
+
+bool PointTracker::in_dense_clutter(const Innovation& last_motion, int plot) const {
+  // Gate volume c_d g^(d/2) sqrt|S|, sqrt|S| from log N(nu; 0, S) and the NIS.
+  const auto d = static_cast<double>(plots_[plot].model.size());
+  const double g = gate_threshold_[plots_[plot].model.size()];
+  const double ball = std::pow(std::numbers::pi * g, d / 2.0) / std::tgamma(d / 2.0 + 1.0);
+  const double root_det = std::exp(-last_motion.log_likelihood - 0.5 * last_motion.nis -
+                                   0.5 * d * std::log(2.0 * std::numbers::pi));
+  return clutter_density(plots_[plot], plot) * ball * root_det >=
+         profile_.branching.last_motion_false_plots;
 }
 
 std::optional<ImmEstimate> PointTracker::last_motion(const PointTrack& track, double time,
@@ -511,7 +533,8 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   update_existence(track.life, likelihood_ratio, pd, profile_.association.gate_probability,
                    profile_.track_life);
   bool detected = detection > 0.5;
-  if (holds_last_motion() && is_reported_as_firm(track.life.status)) {
+  if (holds_last_motion() && is_reported_as_firm(track.life.status) &&
+      static_cast<std::size_t>(t) < dense_.size() && dense_[t] != 0) {
     // branching.coast_on_last_motion: a father with no valid association (§2.2: no plot
     // likelier than its miss) coasts on the motion it was last seen in, however much its
     // plots weigh together; the turns it may have started are its sons' to find (§4.2).

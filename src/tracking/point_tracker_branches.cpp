@@ -151,6 +151,7 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   claimed_by_.assign(plots_.size(), -1);
   pending_splits_.clear();
   doubtful_.clear();
+  replaced_now_.clear();
   if (profile_.branching.coast_sons > 0) motion_before_.assign(tracks_.size(), std::nullopt);
   solve_kind(PairKind::kFatherNonManoeuvre, report, frame);
   split_undecided_fathers(frame);
@@ -572,7 +573,20 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
     update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
                      profile_.association.gate_probability, profile_.track_life);
   }
-  if (advance_life(branch.life, true, 0.0, life_of(branch)).confirmed) {
+  const bool confirmed = advance_life(branch.life, true, 0.0, life_of(branch)).confirmed;
+  if (branch.coast_son) {
+    // Inherited in this look's promotion, it waits for the next look: one decision per look.
+    const std::int64_t father = tree_.father_of(number);
+    if (!is_reported_as_firm(branch.life.status) ||
+        std::find(replaced_now_.begin(), replaced_now_.end(), father) != replaced_now_.end()) {
+      return;
+    }
+    changes_.clear();
+    tree_.promote(number, changes_);
+    apply(changes_, "confirmed with plot " + plot + " (rule 10)", report, frame);
+    return;
+  }
+  if (confirmed) {
     if (non_manoeuvre && of_undecided_father(number)) {  // see promote_confirmed_sons
       confirmed_sons_.push_back({t, pair_likelihood, plots_[pair.plot].plot_id});
       return;
@@ -694,24 +708,36 @@ bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double sc
 
 void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
   const double miss = log_of(1.0 - profile_.association.detection_probability);
+  const int window = profile_.branching.coast_son_looks;
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     PointTrack& branch = tracks_[i];
     if (branch.branch == BranchType::kFather || branch.life.status == TrackStatus::kDeleted ||
-        touched_[i] != 0 || (i < covered_.size() && covered_[i] == 0)) {
+        (i < covered_.size() && covered_[i] == 0)) {
       continue;
     }
-    branch.score += miss;
+    const bool touched = touched_[i] != 0;
     if (branch.coast_son) {
-      if (!age_coast_son(branch, frame.time)) {
+      std::string reason;
+      if (!touched) {
+        branch.score += miss;
+        if (!age_coast_son(branch, frame.time)) {
+          reason = "no plot in delete_confirmed_misses (" +
+                   std::to_string(profile_.track_life.delete_confirmed_misses) + ") looks";
+        }
+      }
+      // Undecided at the end of its window: the father's plots since the split stand.
+      if (reason.empty() && window > 0 && branch.life.scans > window) {
+        reason = "not confirmed within coast_son_looks (" + std::to_string(window) + ")";
+      }
+      if (!reason.empty()) {
         changes_.clear();
         tree_.remove(branch.id, changes_);
-        apply(changes_,
-              "no plot in delete_confirmed_misses (" +
-                  std::to_string(profile_.track_life.delete_confirmed_misses) + ") looks",
-              report, frame);
+        apply(changes_, reason, report, frame);
       }
       continue;
     }
+    if (touched) continue;
+    branch.score += miss;
     branch.estimate = filter_.predict(branch.estimate, std::max(frame.time, branch.estimate.time));
     const double spread = mode_spread(branch.estimate, layout_.dims);
     if (weighs_existence(branch)) {
@@ -836,7 +862,7 @@ void PointTracker::continue_lost_fathers(ScanReport& report, TrackFrame& frame) 
     tree_.add_branch(number, father);
     tracks_[t].branch = BranchType::kSon;
     changes_.clear();
-    tree_.promote(number, changes_);
+    tree_.promote(number, changes_, false);
     std::erase_if(frame.events,
                   [&](const TrackEvent& e) { return e.type == "confirmed" && e.track == number; });
     apply(changes_, why + " (§3.3)", report, frame);
@@ -919,6 +945,7 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
         track.branch = BranchType::kFather;
         track.coast_son = false;
         track.id = change.father;
+        replaced_now_.push_back(change.father);
         slots_.erase(change.track);
         slots_[change.father] = i;
         add_event(frame, "branch_promoted", change.father,

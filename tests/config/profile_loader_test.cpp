@@ -365,6 +365,25 @@ TEST(ProfileLoader, CoastSonsAndTheHeldMotionsNoiseNeedCoastOnLastMotion) {
               ::testing::HasSubstr("branching.coast_son_doubt"));
 }
 
+TEST(ProfileLoader, CoastSonWindowAndClutterAreaLastMotionNeedTheirOptions) {
+  const auto profile = parse_profile(
+      "profile: {name: p, version: '1'}\n"
+      "branching: {coast_on_last_motion: true, coast_sons: 3, coast_son_looks: 6,\n"
+      "            last_motion_false_plots: 0.3}\n",
+      "p.yaml");
+  ASSERT_TRUE(profile) << profile.error().message;
+  EXPECT_EQ(profile->branching.coast_son_looks, 6);
+  EXPECT_DOUBLE_EQ(profile->branching.last_motion_false_plots, 0.3);
+  EXPECT_EQ(TrackingProfile{}.branching.coast_son_looks, 0);
+  EXPECT_DOUBLE_EQ(TrackingProfile{}.branching.last_motion_false_plots, 0.0);
+  EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: true\n  coast_son_looks: 6\n"),
+              ::testing::HasSubstr("coast_son_looks: needs coast_sons > 0"));
+  EXPECT_THAT(error_of("branching:\n  last_motion_false_plots: 0.3\n"),
+              ::testing::HasSubstr("last_motion_false_plots: needs coast_on_last_motion"));
+  EXPECT_THAT(error_of("branching:\n  last_motion_false_plots: -1\n"),
+              ::testing::HasSubstr("branching.last_motion_false_plots"));
+}
+
 TEST(ProfileLoader, BranchConfirmationIsMOfNOrExistence) {
   const auto profile = parse_profile(
       "profile: {name: p, version: '1'}\nbranching: {confirmation: existence}\n", "p.yaml");

@@ -629,6 +629,33 @@ TEST(BranchTracker, FatherThatMissedTakesPlotsOnlyOnItsLastMotion) {
   }
 }
 
+TEST(BranchTracker, LastMotionOnlyWhereItsGateExpectsFalsePlots) {
+  // GIVEN FatherThatMissedTakesPlotsOnlyOnItsLastMotion's script with coast_on_last_motion
+  // and last_motion_false_plots 0.3, in clear sky (1 false plot per 100 km^2) and in a
+  // clutter area (100 per km^2, about 1 in the last motion's gate)
+  for (const double clutter : {1e-8, 1e-4}) {
+    SCOPED_TRACE(clutter);
+    config::TrackingProfile profile = turning_profile(true);
+    profile.track_life.confirmation = config::ConfirmationMethod::kMOfN;
+    profile.association.clutter_density = clutter;
+    profile.branching.last_motion_false_plots = 0.3;
+    Script s(profile);
+    s.start();
+    s.scan(4, {});
+    s.scan(5, {{470.0, 90.0}});
+    if (clutter < 1e-6) {
+      // THEN in clear sky the father gates on its modes' union as without the option, and
+      // takes the turn's plot
+      EXPECT_TRUE(s.associated(1, 501));
+      EXPECT_GT(s.track(1)->position.y(), 20.0);
+      continue;
+    }
+    // THEN in the clutter area its last motion's gate leaves the plot out: it coasts on
+    EXPECT_FALSE(s.associated(1, 501));
+    EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
+  }
+}
+
 TEST(BranchTracker, MissingFatherCoastsOnItsLastMotionWhileItsSonFollowsTheTurn) {
   // GIVEN confirmed track 1 flying straight east at 100 m/s, whose target turns left at
   // 0.5 rad/s from x = 300 m (t = 3) and is missed at t = 4; a manoeuvre gate of 10 m/s^2
@@ -717,16 +744,23 @@ TEST(BranchTracker, SonConfirmedOnExistenceWeighsItsPlotsAgainstTheClutter) {
   }
 }
 
+// A clutter area of 100 false plots per km^2, fathers on their last motion, sons confirmed
+// on existence and up to 3 coast sons per father.
+config::TrackingProfile coast_son_profile() {
+  config::TrackingProfile p = branch_profile();
+  p.track_life.confirmation = config::ConfirmationMethod::kMOfN;
+  p.association.clutter_density = 1e-4;
+  p.branching.coast_on_last_motion = true;
+  p.branching.confirmation = config::ConfirmationMethod::kExistence;
+  p.branching.coast_sons = 3;
+  return p;
+}
+
 TEST(BranchTracker, CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather) {
   // GIVEN confirmed track 1 flying straight east in a clutter area of 100 false plots per
   // km^2, with branching.coast_sons: its target is missed at t = 4 and 5, and at t = 6 a
   // false plot 60 m left of its line lies in its gate, widened by the misses
-  config::TrackingProfile profile = branch_profile();
-  profile.track_life.confirmation = config::ConfirmationMethod::kMOfN;
-  profile.association.clutter_density = 1e-4;
-  profile.branching.coast_on_last_motion = true;
-  profile.branching.confirmation = config::ConfirmationMethod::kExistence;
-  profile.branching.coast_sons = 3;
+  const config::TrackingProfile profile = coast_son_profile();
   Script s(profile);
   s.start();
   s.scan(4, {});
@@ -757,6 +791,33 @@ TEST(BranchTracker, CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather) {
   ASSERT_NE(s.track(1), nullptr);
   EXPECT_NEAR(s.track(1)->position.x(), 800.0, 20.0);
   EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
+}
+
+TEST(BranchTracker, CoastSonNotConfirmedWithinItsWindowIsPruned) {
+  // GIVEN coast son 2 of CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather (t = 6),
+  // with branching.coast_son_looks 2 and misses that would not delete it before 10 looks
+  config::TrackingProfile profile = coast_son_profile();
+  profile.track_life.delete_confirmed_misses = 10;
+  profile.branching.coast_son_looks = 2;
+  Script s(profile);
+  s.start();
+  s.scan(4, {});
+  s.scan(5, {});
+  s.scan(6, {{600.0, 60.0}});
+  ASSERT_EQ(s.events("branch_created").size(), 1u);
+  // WHEN the target stays away (t = 7: the son's second look)
+  s.scan(7, {});
+  // THEN it lives through its window
+  EXPECT_EQ(s.live_branches(), 1);
+  EXPECT_TRUE(s.events("branch_pruned").empty());
+  // WHEN a third look passes without a plot for it
+  s.scan(8, {});
+  // THEN the decision falls to the father's plots: the coast son is pruned
+  EXPECT_EQ(
+      s.events("branch_pruned"),
+      (std::vector<std::string>{"1: son 2 of track 1: not confirmed within coast_son_looks (2)"}));
+  EXPECT_EQ(s.live_branches(), 0);
+  EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
 }
 
 TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {

@@ -174,6 +174,35 @@ TEST(BranchTree, CoastSonOutlivesTheFathersUpdatesAndFollowsAPromotedSibling) {
   EXPECT_EQ(tree.total_branches(), 0);
 }
 
+TEST(BranchTree, PromotedSonKeepsOnlyTheCoastSonsThatSplitBeforeIt) {
+  // GIVEN father 1 with coast son 6, then son 7 (from a manoeuvre pair), then coast son 8
+  // (split from an update of the father after son 7 started)
+  BranchTree tree;
+  tree.add_father(1);
+  tree.add_branch(6, 1, /*coast=*/true);
+  tree.add_branch(7, 1);
+  tree.add_branch(8, 1, /*coast=*/true);
+  // WHEN son 7 is confirmed and replaces the father
+  std::vector<BranchChange> changes;
+  tree.promote(7, changes);
+  // THEN coast son 8, which kept the father's motion from after son 7's start, goes with
+  // the father's track that son 7 replaced; coast son 6 (an earlier alternative) stays
+  EXPECT_TRUE(has(changes, Kind::kPromoted, 7));
+  EXPECT_TRUE(has(changes, Kind::kPruned, 8));
+  EXPECT_FALSE(has(changes, Kind::kPruned, 6));
+  EXPECT_EQ(tree.find(1)->children, (std::vector<std::int64_t>{6}));
+  EXPECT_EQ(tree.total_branches(), 1);
+  // WHEN a new track 9 is adopted as the father's son and promoted (not split from it)
+  tree.add_branch(10, 1, /*coast=*/true);
+  tree.add_branch(9, 1);
+  changes.clear();
+  tree.promote(9, changes, /*split=*/false);
+  // THEN every coast son stays, the one newer than the track's number too
+  EXPECT_FALSE(has(changes, Kind::kPruned, 6));
+  EXPECT_FALSE(has(changes, Kind::kPruned, 10));
+  EXPECT_EQ(tree.find(1)->children, (std::vector<std::int64_t>{6, 10}));
+}
+
 TEST(BranchTree, RemovingANodeTakesItsSubtree) {
   BranchTree tree = family();
   std::vector<BranchChange> changes;

@@ -177,6 +177,11 @@ struct BranchingSpec {
   // miss (paper 003 §1: a non-manoeuvre association keeps the motion unchanged), so that a
   // plot only a turn mode reaches starts a son instead of turning the father.
   NonManoeuvreGate non_manoeuvre_gate = NonManoeuvreGate::kUnion;
+  // Where the last motion applies (needs coast_on_last_motion; 0: everywhere): only where its
+  // gate expects at least this many false plots (the clutter density at a plot times the
+  // gate's volume there), in a clutter area. Elsewhere the father gates on the union and
+  // coasts on its IMM, whose turn modes follow a manoeuvre through a missed look.
+  double last_motion_false_plots = 0.0;
   // [m/s^2] White acceleration of a held last motion (its gate and its coast), at most each
   // model's own accel_sigma; 0: the model's own. A motion held unchanged over missed looks
   // spreads along the range, which the radar measures to tens of metres, by the model's
@@ -197,6 +202,10 @@ struct BranchingSpec {
   // track_life.delete_confirmed_misses misses in a row.
   int coast_sons = 0;
   double coast_son_doubt = 0.1;
+  // The coast sons' decision window (0: none): a coast son that has not replaced its father
+  // within this many looks of its split is pruned, the father's plots then standing (the
+  // N-scan pruning of a multi-hypothesis tracker, on the miss-or-false-alarm question).
+  int coast_son_looks = 0;
   int max_branches_per_father = 12;  // sons + grandsons of one father (3 + 9 at 3 children)
   int max_total_branches = 2000;     // in the whole tracker: bounds time and memory
   bool operator==(const BranchingSpec&) const = default;

@@ -78,8 +78,10 @@ class BranchTree {
   void prune_children(std::int64_t son, std::vector<BranchChange>& out);
   /// §1 (10), §2.3 (2)-(3): the confirmed branch replaces its father. Emits kPromoted for
   /// the branch first, then the clean-up of the father's other branches as in (5). Afterwards
-  /// the branch is a father under the father's number, with the father's coast sons.
-  void promote(std::int64_t branch, std::vector<BranchChange>& out);
+  /// the branch is a father under the father's number, with the father's coast sons; when
+  /// the branch split from the father (`split`: not a new track adopted as its son), only
+  /// those older than the branch (the newer ones split from updates the promotion rejects).
+  void promote(std::int64_t branch, std::vector<BranchChange>& out, bool split = true);
   /// Deletes a node and everything below it (a branch that died, a father deleted, a cap).
   /// Emits kPruned for every branch removed (not for a father).
   void remove(std::int64_t id, std::vector<BranchChange>& out);

@@ -148,6 +148,9 @@ class PointTracker {
   void gate(const PlotScan& scan, double batch_mid, double half_span);
   /// branching.coast_on_last_motion is on (and branching).
   bool holds_last_motion() const;
+  /// branching.last_motion_false_plots: a father's last motion's gate, of which `last_motion`
+  /// is the test at plot `plot`, expects at least that many false plots there.
+  bool in_dense_clutter(const Innovation& last_motion, int plot) const;
   /// A missing father's estimate becomes its last motion's prediction; `coasted` keeps what
   /// its IMM would have coasted to.
   void hold_last_motion(PointTrack& track) const;
@@ -286,10 +289,11 @@ class PointTracker {
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> rejected_;
   std::vector<std::uint8_t> gated_;
-  std::vector<std::uint8_t> covered_;       // per track: inside this batch's coverage
-  std::vector<int> suspended_at_gate_;      // fathers suspended on their prediction
-  std::vector<ImmEstimate> predicted_;      // per track, at its update time
-  std::vector<ImmEstimate> previous_;       // per track, before this batch (branching)
+  std::vector<std::uint8_t> dense_;     // per track: a plot round it in_dense_clutter this batch
+  std::vector<std::uint8_t> covered_;   // per track: inside this batch's coverage
+  std::vector<int> suspended_at_gate_;  // fathers suspended on their prediction
+  std::vector<ImmEstimate> predicted_;  // per track, at its update time
+  std::vector<ImmEstimate> previous_;   // per track, before this batch (branching)
   std::vector<std::uint8_t> has_previous_;  // previous_ holds this batch's prior
   struct LostFather {  // a suspended father and its manoeuvre gate's reach this batch
     int track = 0;
@@ -321,6 +325,7 @@ class PointTracker {
     std::int64_t plot_id = 0;
   };
   std::vector<DoubtfulUpdate> doubtful_;
+  std::vector<std::int64_t> replaced_now_;  // numbers a branch took over in this batch
   std::vector<int> claimed_by_;  // per plot: the father whose likeliest it is; -1 none, -2 several
   std::vector<Sphere> mode_reach_;               // gate_manoeuvre's models' regions
   std::vector<Candidate> candidates_;            // non-manoeuvre gates
