@@ -139,6 +139,8 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout l
                                   .max_exact_states = kManoeuvreExactStates}) {
   for (int d = 1; d <= kMaxMeasurementDim; ++d) {
     gate_threshold_[d] = chi_square_quantile(profile.association.gate_probability, d);
+    const double half = 0.5 * d;
+    gate_volume_per_peak_[d] = std::pow(0.5 * gate_threshold_[d], half) / std::tgamma(half + 1.0);
     manoeuvre_threshold_[d] = chi_square_quantile(profile.branching.manoeuvre_gate_probability, d);
   }
   if (manoeuvre_) {
@@ -342,14 +344,11 @@ bool PointTracker::holds_last_motion() const {
 }
 
 bool PointTracker::in_dense_clutter(const Innovation& last_motion, int plot) const {
-  // Gate volume c_d g^(d/2) sqrt|S|, sqrt|S| from log N(nu; 0, S) and the NIS.
-  const auto d = static_cast<double>(plots_[plot].model.size());
-  const double g = gate_threshold_[plots_[plot].model.size()];
-  const double ball = std::pow(std::numbers::pi * g, d / 2.0) / std::tgamma(d / 2.0 + 1.0);
-  const double root_det = std::exp(-last_motion.log_likelihood - 0.5 * last_motion.nis -
-                                   0.5 * d * std::log(2.0 * std::numbers::pi));
-  return clutter_density(plots_[plot], plot) * ball * root_det >=
-         profile_.branching.last_motion_false_plots;
+  // Gate volume c_d g^(d/2) sqrt|S| = gate_volume_per_peak_ / N(0; 0, S), the peak density
+  // from log N(nu; 0, S) and the NIS (c_d = pi^(d/2) / Gamma(d/2 + 1)).
+  const double volume = gate_volume_per_peak_[plots_[plot].model.size()] *
+                        std::exp(-last_motion.log_likelihood - 0.5 * last_motion.nis);
+  return clutter_density(plots_[plot], plot) * volume >= profile_.branching.last_motion_false_plots;
 }
 
 std::optional<ImmEstimate> PointTracker::last_motion(const PointTrack& track, double time,

@@ -279,6 +279,8 @@ class PointTracker {
   std::int64_t next_id_ = 1;
   std::uint64_t batches_ = 0;
   double gate_threshold_[kMaxMeasurementDim + 1] = {};  // chi-square quantile per dims
+  // per dims: the gate's volume times N(nu; 0, S)'s peak, (g/2)^(d/2) / Gamma(d/2 + 1)
+  double gate_volume_per_peak_[kMaxMeasurementDim + 1] = {};
   double manoeuvre_threshold_[kMaxMeasurementDim + 1] = {};
   double batch_mid_ = 0.0, half_span_ = 0.0;  // this batch's plot times
   BranchTree tree_;
