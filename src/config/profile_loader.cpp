@@ -278,19 +278,19 @@ BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingPro
   s.integer("max_total_branches", b.max_total_branches, kAtLeastOne);
   s.finish();
 
-  if (b.non_manoeuvre_gate == NonManoeuvreGate::kLastMotion && !b.coast_on_last_motion) {
-    s.error("non_manoeuvre_gate", "last_motion needs coast_on_last_motion: true");
+  // The held last motion's options do nothing without it: set in the file with it off, they
+  // are a mistake (taken from the defaults, they are simply inert).
+  if (!b.coast_on_last_motion) {
+    const std::pair<const char*, bool> uses[] = {
+        {"non_manoeuvre_gate", b.non_manoeuvre_gate == NonManoeuvreGate::kLastMotion},
+        {"last_motion_accel_sigma", b.last_motion_accel_sigma > 0.0},
+        {"coast_sons", b.coast_sons > 0},
+        {"last_motion_false_plots", b.last_motion_false_plots > 0.0}};
+    for (const auto& [key, used] : uses) {
+      if (used && s.has(key)) s.error(key, "needs coast_on_last_motion: true");
+    }
   }
-  if (b.last_motion_accel_sigma > 0.0 && !b.coast_on_last_motion) {
-    s.error("last_motion_accel_sigma", "needs coast_on_last_motion: true");
-  }
-  if (b.coast_sons > 0 && !b.coast_on_last_motion) {
-    s.error("coast_sons", "coast sons need coast_on_last_motion: true");
-  }
-  if (b.last_motion_false_plots > 0.0 && !b.coast_on_last_motion) {
-    s.error("last_motion_false_plots", "needs coast_on_last_motion: true");
-  }
-  if (b.coast_son_looks > 0 && b.coast_sons == 0) {
+  if (b.coast_son_looks > 0 && b.coast_sons == 0 && s.has("coast_son_looks")) {
     s.error("coast_son_looks", "needs coast_sons > 0");
   }
   // The manoeuvre gate is the wider of the two (paper 003 §1).

@@ -108,7 +108,7 @@ Expected<PointTracker> PointTracker::create(const config::TrackingProfile& profi
   // A held last motion's models: the IMM's, with at most last_motion_accel_sigma of noise.
   std::optional<ImmFilter> hold;
   if (const double sigma = profile.branching.last_motion_accel_sigma;
-      profile.branching.enabled && sigma > 0.0) {
+      profile.branching.enabled && profile.branching.coast_on_last_motion && sigma > 0.0) {
     config::TrackingProfile held = profile;
     for (config::MotionModelSpec& m : held.motion_models) {
       m.accel_sigma = std::min(m.accel_sigma, sigma);
@@ -238,7 +238,9 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   manoeuvre_candidates_.clear();
   // branching.last_motion_false_plots weighs the clutter round each plot while gating: from
   // all of this batch's plots (associate_branches re-estimates it from the ungated ones).
-  if (branching() && profile_.branching.last_motion_false_plots > 0.0) estimate_clutter_density();
+  if (holds_last_motion() && profile_.branching.last_motion_false_plots > 0.0) {
+    estimate_clutter_density();
+  }
   batch_mid_ = batch_mid;
   half_span_ = half_span;
   predicted_.resize(tracks_.size());
@@ -306,7 +308,8 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     const std::optional<ImmEstimate> narrowed = last_motion(track, predicted_[t].time);
     // branching.last_motion_false_plots: the clutter is weighed in the last motion's gate,
     // whether or not the father gates on it in this look.
-    const bool weighs_clutter = profile_.branching.last_motion_false_plots > 0.0;
+    const bool weighs_clutter =
+        holds_last_motion() && profile_.branching.last_motion_false_plots > 0.0;
     const std::optional<ImmEstimate> held =
         narrowed || !weighs_clutter ? narrowed : last_motion(track, predicted_[t].time, true);
     for (const int j : neighbours_) {
@@ -525,12 +528,13 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   PointTrack& track = tracks_[t];
   if (!covered_[t] && candidates.empty()) return;  // not looked at: neither updated nor aged
   const double pd = profile_.association.detection_probability;
-  const double likelihood_ratio =
+  const PlotRatios ratios =
       soft_update(t, candidates_, candidates, beta_plots, beta_miss, track.id, frame);
   const double detection = 1.0 - beta_miss;
   track.quality = 0.8 * track.quality + 0.2 * detection;
-  update_existence(track.life, likelihood_ratio, pd, profile_.association.gate_probability,
+  update_existence(track.life, ratios.sum, pd, profile_.association.gate_probability,
                    profile_.track_life);
+  track.life.support += scan_support(ratios.best, pd, profile_.association.gate_probability);
   bool detected = detection > 0.5;
   if (holds_last_motion() && is_reported_as_firm(track.life.status) &&
       static_cast<std::size_t>(t) < dense_.size() && dense_[t] != 0) {
@@ -550,17 +554,18 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   if (change.deleted) add_event(frame, "deleted", track.id, "");
 }
 
-double PointTracker::soft_update(int t, std::vector<Candidate>& pool,
-                                 std::span<const int> candidates,
-                                 std::span<const double> beta_plots, double beta_miss,
-                                 std::int64_t number, TrackFrame& frame) {
+PointTracker::PlotRatios PointTracker::soft_update(int t, std::vector<Candidate>& pool,
+                                                   std::span<const int> candidates,
+                                                   std::span<const double> beta_plots,
+                                                   double beta_miss, std::int64_t number,
+                                                   TrackFrame& frame) {
   PointTrack& track = tracks_[t];
   const double pd = profile_.association.detection_probability;
   if (candidates.empty()) {
     track.estimate = filter_.predict(track.estimate, std::max(frame.time, track.estimate.time));
-    return 0.0;
+    return {};
   }
-  double likelihood_ratio = 0.0;  // sum_i L_i / lambda_i over the gated plots
+  PlotRatios ratios;
   // Plots with a negligible weight change nothing but cost a Kalman update per mode: they
   // are left out and the other weights renormalised.
   hypotheses_.clear();
@@ -570,7 +575,11 @@ double PointTracker::soft_update(int t, std::vector<Candidate>& pool,
     Candidate& c = pool[candidates[k]];
     const double plot_density = clutter_density(plots_[c.plot], c.plot);
     density += plot_density / static_cast<double>(candidates.size());
-    if (c.hypothesis.usable) likelihood_ratio += c.hypothesis.likelihood / plot_density;
+    if (c.hypothesis.usable) {
+      const double ratio = c.hypothesis.likelihood / plot_density;
+      ratios.sum += ratio;
+      ratios.best = std::max(ratios.best, ratio);
+    }
     if (beta_plots[k] >= kAssociationReportThreshold) {
       frame.associations.push_back({number, plots_[c.plot].plot_id, beta_plots[k]});
     }
@@ -585,7 +594,7 @@ double PointTracker::soft_update(int t, std::vector<Candidate>& pool,
   if (holds_last_motion() && valid_association(beta_plots, beta_miss)) {
     track.last_detected = track.estimate;  // it found its target (a son, later a father)
   }
-  return likelihood_ratio;
+  return ratios;
 }
 
 ImmEstimate PointTracker::start_estimate(const Initiation& initiation, TrackLife& life) const {

@@ -152,7 +152,7 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   pending_splits_.clear();
   doubtful_.clear();
   replaced_now_.clear();
-  if (profile_.branching.coast_sons > 0) motion_before_.assign(tracks_.size(), std::nullopt);
+  if (profile_.branching.coast_sons > 0) before_update_.assign(tracks_.size(), BeforeUpdate{});
   solve_kind(PairKind::kFatherNonManoeuvre, report, frame);
   split_undecided_fathers(frame);
   solve_kind(PairKind::kSonNonManoeuvre, report, frame);
@@ -206,7 +206,8 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
         std::optional<ImmEstimate> last_detected;
         if (split && holds_last_motion()) last_detected = tracks_[t].last_detected;
         if (kind == PairKind::kFatherNonManoeuvre && profile_.branching.coast_sons > 0) {
-          motion_before_[static_cast<std::size_t>(t)] = tracks_[t].last_detected;
+          before_update_[static_cast<std::size_t>(t)] = {tracks_[t].last_detected,
+                                                         tracks_[t].life.support};
         }
         if (kind == PairKind::kFatherNonManoeuvre) update_father(t, mine, beta, miss, frame);
         // A doomed father takes no non-manoeuvre pair but may start sons, so that a
@@ -447,9 +448,9 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
   const int most = profile_.branching.coast_sons;
   for (const DoubtfulUpdate& d : doubtful_) {
     const PointTrack& father = tracks_[d.track];
-    const std::optional<ImmEstimate>& before = motion_before_[static_cast<std::size_t>(d.track)];
+    const BeforeUpdate& before = before_update_[static_cast<std::size_t>(d.track)];
     if (father.branch != BranchType::kFather || father.replaced || father.doomed ||
-        father.life.status == TrackStatus::kDeleted || !before) {
+        father.life.status == TrackStatus::kDeleted || !before.motion) {
       continue;
     }
     const std::int64_t father_id = father.id;
@@ -477,7 +478,9 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
     son.life.consecutive_misses = 1;  // this look: the target missed, the plot a false alarm
     son.life.existence = std::clamp(d.doubt, profile_.track_life.initial_existence,
                                     profile_.track_life.confirm_existence);
-    son.last_detected = before;
+    // The target missed in this look: the father's support before its plot, and a miss.
+    son.life.support = before.support + miss_support();
+    son.last_detected = before.motion;
     son.estimate = *last_motion(son, frame.time, true);
     son.quality = quality;
     son.score = score;
@@ -494,7 +497,13 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
   doubtful_.clear();
 }
 
+double PointTracker::miss_support() const {
+  return scan_support(0.0, profile_.association.detection_probability,
+                      profile_.association.gate_probability);
+}
+
 bool PointTracker::age_coast_son(PointTrack& son, double time) {
+  son.life.support += miss_support();
   son.life.history <<= 1;
   ++son.life.scans;
   ++son.life.consecutive_misses;
@@ -509,6 +518,24 @@ bool PointTracker::age_coast_son(PointTrack& son, double time) {
 bool PointTracker::of_undecided_father(std::int64_t son) const {
   const int f = slot(tree_.father_of(son));
   return f >= 0 && tracks_[f].undecided;
+}
+
+double PointTracker::family_support(std::int64_t father) const {
+  // The father and its paper 003 branches: a turn its sons follow is the target too.
+  double best = tracks_[slot(father)].life.support;
+  const BranchNode* node = tree_.find(father);
+  if (node == nullptr) return best;
+  for (const std::int64_t son : node->children) {
+    const BranchNode* s = tree_.find(son);
+    if (s == nullptr || s->coast) continue;
+    for (const std::int64_t id : s->children) {
+      const int g = slot(id);
+      if (g >= 0) best = std::max(best, tracks_[g].life.support);
+    }
+    const int i = slot(son);
+    if (i >= 0) best = std::max(best, tracks_[i].life.support);
+  }
+  return best;
 }
 
 void PointTracker::promote_confirmed_sons(ScanReport& report, TrackFrame& frame) {
@@ -544,7 +571,10 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
       pair_likelihood = pool[c].hypothesis.likelihood;
     }
   }
-  const double likelihood_ratio = soft_update(t, pool, u.candidates, u.beta, u.miss, number, frame);
+  const PlotRatios ratios = soft_update(t, pool, u.candidates, u.beta, u.miss, number, frame);
+  const double likelihood_ratio = ratios.sum;
+  branch.life.support += scan_support(ratios.best, profile_.association.detection_probability,
+                                      profile_.association.gate_probability);
   branch.quality = 0.8 * branch.quality + 0.2 * (1.0 - u.miss);
   branch.last_plot = plots_[pair.plot];
   branch.last_plot_batch = batches_;
@@ -575,12 +605,19 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   }
   const bool confirmed = advance_life(branch.life, true, 0.0, life_of(branch)).confirmed;
   if (branch.coast_son) {
-    // Inherited in this look's promotion, it waits for the next look: one decision per look.
+    // Two hypotheses of one target since the split, the father's plots or misses and now
+    // this plot: the better supported one stands, as in track-oriented MHT. Inherited in
+    // this look's promotion, it waits for the next look: one decision per look.
     const std::int64_t father = tree_.father_of(number);
-    if (!is_reported_as_firm(branch.life.status) ||
+    const int f = slot(father);
+    const bool stands = f >= 0 && branch.life.support > family_support(father);
+    if (!stands ||
         std::find(replaced_now_.begin(), replaced_now_.end(), father) != replaced_now_.end()) {
       return;
     }
+    // Firm as the father was: its support says it is the target.
+    branch.life.status = TrackStatus::kConfirmed;
+    branch.life.existence = std::max(branch.life.existence, tracks_[f].life.existence);
     changes_.clear();
     tree_.promote(number, changes_);
     apply(changes_, "confirmed with plot " + plot + " (rule 10)", report, frame);
@@ -612,6 +649,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   const std::int64_t parent_id = parent.id;
   const BranchType parent_type = parent.branch;
   const double parent_quality = parent.quality;
+  const double parent_support = parent.life.support;
   const double score = parent.score + log_of(pair.probability);
   const std::int64_t father = tree_.father_of(parent_id);
   if (!make_room(father, parent_id, score, plot.plot_id, report, frame)) return;
@@ -637,6 +675,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   branch.last_plot = plot;
   branch.last_plot_batch = batches_;
   branch.score = score;
+  branch.life.support = parent_support;  // its plots to come decide against the family's
   tree_.add_branch(branch.id, parent_id);
   used_by_branch_[pair.plot] = 1;
   frame.associations.push_back({branch.id, plot.plot_id, pair.probability});
@@ -861,6 +900,8 @@ void PointTracker::continue_lost_fathers(ScanReport& report, TrackFrame& frame) 
     tree_.remove(number, changes_);
     tree_.add_branch(number, father);
     tracks_[t].branch = BranchType::kSon;
+    // Its plots continue the father's: the coast sons it inherits compare with that sum.
+    tracks_[t].life.support += tracks_[f].life.support;
     changes_.clear();
     tree_.promote(number, changes_, false);
     std::erase_if(frame.events,
@@ -892,6 +933,7 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
   branch.last_plot = plot;
   branch.last_plot_batch = batches_;
   branch.score = score;
+  branch.life.support = tracks_[father].life.support;
   tree_.add_branch(branch.id, father_id);
   std::string detail = name(BranchType::kSon, branch.id) + " of " +
                        name(BranchType::kFather, father_id) + " from plots";

@@ -18,6 +18,12 @@ TrackLife initiated_life(int plots, int scans) noexcept {
   return life;
 }
 
+double scan_support(double best_ratio, double detection_probability,
+                    double gate_probability) noexcept {
+  const double plot = std::isfinite(best_ratio) ? detection_probability * best_ratio : 0.0;
+  return std::log(std::max({1.0 - detection_probability * gate_probability, plot, 1e-300}));
+}
+
 void update_existence(TrackLife& life, double likelihood_ratio, double detection_probability,
                       double gate_probability, const config::TrackLifeSpec& spec) noexcept {
   const double predicted = spec.survival_probability * life.existence;

@@ -324,7 +324,12 @@ TEST(ProfileLoader, CoastOnLastMotionIsASwitch) {
       "profile: {name: p, version: '1'}\nbranching: {coast_on_last_motion: true}\n", "p.yaml");
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_TRUE(profile->branching.coast_on_last_motion);
-  EXPECT_FALSE(TrackingProfile{}.branching.coast_on_last_motion);
+  EXPECT_TRUE(TrackingProfile{}.branching.coast_on_last_motion);
+  // Off alone: the options that need it keep their (inert) defaults without an error.
+  const auto off = parse_profile(
+      "profile: {name: p, version: '1'}\nbranching: {coast_on_last_motion: false}\n", "p.yaml");
+  ASSERT_TRUE(off) << off.error().message;
+  EXPECT_FALSE(off->branching.coast_on_last_motion);
   EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: 2\n"),
               ::testing::HasSubstr("branching.coast_on_last_motion"));
 }
@@ -336,9 +341,10 @@ TEST(ProfileLoader, LastMotionGateNeedsCoastOnLastMotion) {
       "p.yaml");
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_EQ(profile->branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
-  EXPECT_EQ(TrackingProfile{}.branching.non_manoeuvre_gate, NonManoeuvreGate::kUnion);
-  EXPECT_THAT(error_of("branching:\n  non_manoeuvre_gate: last_motion\n"),
-              ::testing::HasSubstr("last_motion needs coast_on_last_motion: true"));
+  EXPECT_EQ(TrackingProfile{}.branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
+  EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: false\n  non_manoeuvre_gate: "
+                       "last_motion\n"),
+              ::testing::HasSubstr("non_manoeuvre_gate: needs coast_on_last_motion: true"));
   EXPECT_THAT(error_of("branching:\n  non_manoeuvre_gate: cv\n"),
               ::testing::HasSubstr("branching.non_manoeuvre_gate"));
 }
@@ -353,12 +359,13 @@ TEST(ProfileLoader, CoastSonsAndTheHeldMotionsNoiseNeedCoastOnLastMotion) {
   EXPECT_EQ(profile->branching.coast_sons, 3);
   EXPECT_DOUBLE_EQ(profile->branching.coast_son_doubt, 0.2);
   EXPECT_DOUBLE_EQ(profile->branching.last_motion_accel_sigma, 0.5);
-  EXPECT_EQ(TrackingProfile{}.branching.coast_sons, 0);
-  EXPECT_DOUBLE_EQ(TrackingProfile{}.branching.last_motion_accel_sigma, 0.0);
-  EXPECT_THAT(error_of("branching:\n  coast_sons: 1\n"),
-              ::testing::HasSubstr("coast sons need coast_on_last_motion: true"));
-  EXPECT_THAT(error_of("branching:\n  last_motion_accel_sigma: 0.5\n"),
-              ::testing::HasSubstr("needs coast_on_last_motion: true"));
+  EXPECT_EQ(TrackingProfile{}.branching.coast_sons, 3);
+  EXPECT_DOUBLE_EQ(TrackingProfile{}.branching.last_motion_accel_sigma, 0.5);
+  EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: false\n  coast_sons: 1\n"),
+              ::testing::HasSubstr("coast_sons: needs coast_on_last_motion: true"));
+  EXPECT_THAT(
+      error_of("branching:\n  coast_on_last_motion: false\n  last_motion_accel_sigma: 0.5\n"),
+      ::testing::HasSubstr("needs coast_on_last_motion: true"));
   EXPECT_THAT(error_of("branching:\n  coast_sons: -1\n"),
               ::testing::HasSubstr("branching.coast_sons"));
   EXPECT_THAT(error_of("branching:\n  coast_son_doubt: 0\n"),
@@ -374,11 +381,12 @@ TEST(ProfileLoader, CoastSonWindowAndClutterAreaLastMotionNeedTheirOptions) {
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_EQ(profile->branching.coast_son_looks, 6);
   EXPECT_DOUBLE_EQ(profile->branching.last_motion_false_plots, 0.3);
-  EXPECT_EQ(TrackingProfile{}.branching.coast_son_looks, 0);
-  EXPECT_DOUBLE_EQ(TrackingProfile{}.branching.last_motion_false_plots, 0.0);
-  EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: true\n  coast_son_looks: 6\n"),
+  EXPECT_EQ(TrackingProfile{}.branching.coast_son_looks, 6);
+  EXPECT_DOUBLE_EQ(TrackingProfile{}.branching.last_motion_false_plots, 0.3);
+  EXPECT_THAT(error_of("branching:\n  coast_sons: 0\n  coast_son_looks: 6\n"),
               ::testing::HasSubstr("coast_son_looks: needs coast_sons > 0"));
-  EXPECT_THAT(error_of("branching:\n  last_motion_false_plots: 0.3\n"),
+  EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: false\n"
+                       "  last_motion_false_plots: 0.3\n"),
               ::testing::HasSubstr("last_motion_false_plots: needs coast_on_last_motion"));
   EXPECT_THAT(error_of("branching:\n  last_motion_false_plots: -1\n"),
               ::testing::HasSubstr("branching.last_motion_false_plots"));
@@ -386,10 +394,10 @@ TEST(ProfileLoader, CoastSonWindowAndClutterAreaLastMotionNeedTheirOptions) {
 
 TEST(ProfileLoader, BranchConfirmationIsMOfNOrExistence) {
   const auto profile = parse_profile(
-      "profile: {name: p, version: '1'}\nbranching: {confirmation: existence}\n", "p.yaml");
+      "profile: {name: p, version: '1'}\nbranching: {confirmation: m_of_n}\n", "p.yaml");
   ASSERT_TRUE(profile) << profile.error().message;
-  EXPECT_EQ(profile->branching.confirmation, ConfirmationMethod::kExistence);
-  EXPECT_EQ(TrackingProfile{}.branching.confirmation, ConfirmationMethod::kMOfN);
+  EXPECT_EQ(profile->branching.confirmation, ConfirmationMethod::kMOfN);
+  EXPECT_EQ(TrackingProfile{}.branching.confirmation, ConfirmationMethod::kExistence);
   EXPECT_THAT(error_of("branching:\n  confirmation: score\n"),
               ::testing::HasSubstr("branching.confirmation"));
 }

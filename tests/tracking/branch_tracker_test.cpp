@@ -7,6 +7,7 @@
 // gate (CV, 100 m/s^2, P_G 0.9999) about 250 m, so a plot 150 m off the prediction lies
 // in the manoeuvre gate only.
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,15 @@ config::TrackingProfile branch_profile() {
   p.association.clutter_density = 1e-8;  // [1/m^2]
   p.branching.manoeuvre_models = {"cv"};
   p.branching.manoeuvre_accel_sigma = 100.0;
+  // Paper 003's rules alone: the default's clutter-area options off (tests of each turn
+  // them on).
+  p.branching.coast_on_last_motion = false;
+  p.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kUnion;
+  p.branching.last_motion_false_plots = 0.0;
+  p.branching.last_motion_accel_sigma = 0.0;
+  p.branching.confirmation = config::ConfirmationMethod::kMOfN;
+  p.branching.coast_sons = 0;
+  p.branching.coast_son_looks = 0;
   return p;
 }
 
@@ -85,6 +95,22 @@ struct Script {
   bool associated(std::int64_t track, std::int64_t plot) const {
     return std::any_of(frame.associations.begin(), frame.associations.end(),
                        [&](const Association& a) { return a.track == track && a.plot == plot; });
+  }
+  /// Track 1 (start()) in a clutter area misses at t = 4 and 5, and at t = 6 takes a false
+  /// plot 60 m left of its line, which splits coast son 2 (with coast_son_profile()).
+  void split_coast_son() {
+    start();
+    scan(4, {});
+    scan(5, {});
+    scan(6, {{600.0, 60.0}});
+  }
+
+  /// TrackLife::support of the live track or branch numbered `id` (NaN if none).
+  double support(std::int64_t id) const {
+    for (const PointTrack& t : tracker.tracks()) {
+      if (t.id == id && t.life.status != TrackStatus::kDeleted) return t.life.support;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
   }
   int live_branches() const {
     return static_cast<int>(
@@ -762,10 +788,7 @@ TEST(BranchTracker, CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather) {
   // false plot 60 m left of its line lies in its gate, widened by the misses
   const config::TrackingProfile profile = coast_son_profile();
   Script s(profile);
-  s.start();
-  s.scan(4, {});
-  s.scan(5, {});
-  s.scan(6, {{600.0, 60.0}});
+  s.split_coast_son();
   // THEN the father takes it (rule 5), and as the plot may be a false alarm (its clutter
   // density is close to its density under the track) its last motion stays as coast son 2
   ASSERT_TRUE(s.associated(1, 601));
@@ -784,12 +807,35 @@ TEST(BranchTracker, CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather) {
     const std::vector<std::string> now = s.events("branch_promoted");
     promoted.insert(promoted.end(), now.begin(), now.end());
   }
-  // THEN the coast son, confirmed on its existence, replaces the father under number 1
-  // (rule 10), back on the target
+  // THEN the coast son, better supported than the father since the split, replaces it
+  // under number 1 (rule 10), back on the target
   ASSERT_EQ(promoted.size(), 1u);
   EXPECT_EQ(promoted[0].rfind("1: son 2 of track 1 replaces track 1", 0), 0u);
   ASSERT_NE(s.track(1), nullptr);
   EXPECT_NEAR(s.track(1)->position.x(), 800.0, 20.0);
+  EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
+}
+
+TEST(BranchTracker, CoastSonReplacesTheFatherOnceItsSupportSinceTheSplitIsHigher) {
+  // GIVEN coast son 2 of CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather (t = 6):
+  // the father's support has the false plot of t = 6, the son's a miss instead
+  const config::TrackingProfile profile = coast_son_profile();
+  Script s(profile);
+  s.split_coast_son();
+  ASSERT_EQ(s.events("branch_created").size(), 1u);
+  const double father = s.support(1), son = s.support(2);
+  EXPECT_LT(son, father);
+  // WHEN at t = 7 the target's plot returns on the straight line and a false plot lies
+  // further left, on the father's pulled track
+  s.scan(7, {{700.0, 0.0}, {700.0, 75.0}});
+  // THEN the son takes the target's plot and, its support now above the father's (the
+  // father, undecided between the two plots, takes neither), replaces it in this very look:
+  // one plot decides, not the several an existence threshold would need after two misses
+  EXPECT_TRUE(s.associated(2, 701));
+  EXPECT_EQ(s.events("branch_promoted"),
+            (std::vector<std::string>{
+                "1: son 2 of track 1 replaces track 1: confirmed with plot 701 (rule 10)"}));
+  EXPECT_GT(s.support(1), father);
   EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
 }
 
@@ -800,10 +846,7 @@ TEST(BranchTracker, CoastSonNotConfirmedWithinItsWindowIsPruned) {
   profile.track_life.delete_confirmed_misses = 10;
   profile.branching.coast_son_looks = 2;
   Script s(profile);
-  s.start();
-  s.scan(4, {});
-  s.scan(5, {});
-  s.scan(6, {{600.0, 60.0}});
+  s.split_coast_son();
   ASSERT_EQ(s.events("branch_created").size(), 1u);
   // WHEN the target stays away (t = 7: the son's second look)
   s.scan(7, {});

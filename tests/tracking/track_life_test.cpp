@@ -81,6 +81,17 @@ TEST(TrackLife, ExistenceConfirmsAndDeletesOnItsThresholds) {
   EXPECT_TRUE(deleted);
 }
 
+TEST(TrackLife, SupportIsTheLogRatioOfTheScansBestHypothesis) {
+  // A miss: 1 - P_D P_G; a plot likelier than that: P_D L / lambda; never below the miss.
+  EXPECT_NEAR(scan_support(0.0, 0.9, 0.999), std::log(1.0 - 0.9 * 0.999), 1e-12);
+  EXPECT_NEAR(scan_support(20.0, 0.9, 0.999), std::log(0.9 * 20.0), 1e-12);
+  EXPECT_NEAR(scan_support(0.05, 0.9, 0.999), std::log(1.0 - 0.9 * 0.999), 1e-12);
+  EXPECT_NEAR(scan_support(std::numeric_limits<double>::quiet_NaN(), 0.9, 0.999),
+              std::log(1.0 - 0.9 * 0.999), 1e-12);
+  // P_D = P_G = 1 and no plot: very unlikely, still finite.
+  EXPECT_TRUE(std::isfinite(scan_support(0.0, 1.0, 1.0 - 1e-12)));
+}
+
 TEST(TrackLife, ConfirmsOnMOfNCountedFromTheFirstPlot) {
   // GIVEN a track initiated from 2 plots in 2 scans
   TrackLife life = initiated_life(2, 2);

@@ -75,7 +75,7 @@ struct MotionModelSpec {
 
 /// Local clutter density (a clutter map) on top of the batch-wide `auto` estimate.
 struct ClutterMapSpec {
-  bool enabled = false;
+  bool enabled = true;
   double range_cell = 5000.0;      // [m] polar plots
   double azimuth_cell = 0.05;      // [rad] polar plots
   double cartesian_cell = 5000.0;  // [m] x and y of Cartesian plots
@@ -168,44 +168,44 @@ struct BranchingSpec {
   // association, predicted alone (IMM mixing blends in the other modes' diverging
   // predictions), and gates non-manoeuvre pairs on it; plots off that motion lie in its
   // manoeuvre gate only and start sons (paper 003 §4.2), whose gate starts from its IMM's
-  // own coast. false: the IMM-JPDA update and the union of all modes' gates.
-  // Off by default: measured, it helps in clutter (exp. 2) but costs exp. 1 turns
-  // (docs/branch-tracker.md).
-  bool coast_on_last_motion = false;
+  // own coast. false: the IMM-JPDA update and the union of all modes' gates, and the
+  // options below that need it are inert. On by default with them (paper 003 exp. 2 in
+  // clutter areas, docs/branch-tracker.md).
+  bool coast_on_last_motion = true;
   // A firm father's non-manoeuvre gate: union, the union of its IMM modes' gates; last_motion
   // (needs coast_on_last_motion), its last motion's gate in every scan, not only after a
   // miss (paper 003 §1: a non-manoeuvre association keeps the motion unchanged), so that a
   // plot only a turn mode reaches starts a son instead of turning the father.
-  NonManoeuvreGate non_manoeuvre_gate = NonManoeuvreGate::kUnion;
+  NonManoeuvreGate non_manoeuvre_gate = NonManoeuvreGate::kLastMotion;
   // Where the last motion applies (needs coast_on_last_motion; 0: everywhere): only where its
   // gate expects at least this many false plots (the clutter density at a plot times the
   // gate's volume there), in a clutter area. Elsewhere the father gates on the union and
   // coasts on its IMM, whose turn modes follow a manoeuvre through a missed look.
-  double last_motion_false_plots = 0.0;
+  double last_motion_false_plots = 0.3;
   // [m/s^2] White acceleration of a held last motion (its gate and its coast), at most each
   // model's own accel_sigma; 0: the model's own. A motion held unchanged over missed looks
   // spreads along the range, which the radar measures to tens of metres, by the model's
   // noise alone (2 m/s^2: 290 m after 40 s), and a wider gate holds more false alarms.
-  double last_motion_accel_sigma = 0.0;
+  double last_motion_accel_sigma = 0.5;
   // How a son or grandson started from a manoeuvre pair confirms (rule 10): m_of_n on one
   // more plot (the paper's examples); existence as track_life does (IPDA), from
   // track_life.initial_existence, weighing each later plot against the clutter density
   // round it, so that a clutter area's plots confirm branches slowly.
-  ConfirmationMethod confirmation = ConfirmationMethod::kMOfN;
+  ConfirmationMethod confirmation = ConfirmationMethod::kExistence;
   // Coast sons (needs coast_on_last_motion; 0: none): when a firm father takes a plot that
   // may be a false alarm (its clutter density is at least coast_son_doubt of the plot's
   // density under the father and the clutter together), its last motion before that plot
   // stays as a hidden son that rule 5 does not cut: the hypothesis that its target was
-  // missed. It coasts and gates on that motion, takes non-manoeuvre pairs, is confirmed as
-  // `confirmation` says (existence from the doubt) and then replaces the father. At most
-  // this many per father (the oldest untouched goes); deleted after
-  // track_life.delete_confirmed_misses misses in a row.
-  int coast_sons = 0;
+  // missed. It coasts and gates on that motion, takes non-manoeuvre pairs, and replaces the
+  // father in a look where it takes a plot and its TrackLife::support passes the father's
+  // and the father's sons' and grandsons'. At most this many per father (the oldest
+  // untouched goes); deleted after track_life.delete_confirmed_misses misses in a row.
+  int coast_sons = 3;
   double coast_son_doubt = 0.1;
   // The coast sons' decision window (0: none): a coast son that has not replaced its father
   // within this many looks of its split is pruned, the father's plots then standing (the
   // N-scan pruning of a multi-hypothesis tracker, on the miss-or-false-alarm question).
-  int coast_son_looks = 0;
+  int coast_son_looks = 6;
   int max_branches_per_father = 12;  // sons + grandsons of one father (3 + 9 at 3 children)
   int max_total_branches = 2000;     // in the whole tracker: bounds time and memory
   bool operator==(const BranchingSpec&) const = default;

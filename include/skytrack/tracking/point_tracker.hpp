@@ -132,12 +132,16 @@ class PointTracker {
   /// clusters above association.max_exact_cluster_size: their wide gates in dense clutter
   /// chain hundreds of tracks, where k-best joint events cost seconds.
   const JpdaResult& pda_marginals(const JpdaProblem& problem);
+  /// Likelihood over clutter density, L_i / lambda_i, of a track's gated plots.
+  struct PlotRatios {
+    double sum = 0.0;   // over the plots: the existence update's likelihood ratio
+    double best = 0.0;  // the likeliest plot's: its support (TrackLife::support)
+  };
   /// IMM-PDA update of track t with its weighted candidates from `pool`; reports the
-  /// associations under `number`. Returns sum_i L_i / lambda_i over the candidates (the
-  /// existence update's likelihood ratio).
-  double soft_update(int t, std::vector<Candidate>& pool, std::span<const int> candidates,
-                     std::span<const double> beta_plots, double beta_miss, std::int64_t number,
-                     TrackFrame& frame);
+  /// associations under `number`.
+  PlotRatios soft_update(int t, std::vector<Candidate>& pool, std::span<const int> candidates,
+                         std::span<const double> beta_plots, double beta_miss, std::int64_t number,
+                         TrackFrame& frame);
 
   void make_measurements(const PlotScan& scan, ScanReport& report);
   double plot_spread_at(const Eigen::Vector3d& position, const PlotScan& scan) const;
@@ -226,6 +230,9 @@ class PointTracker {
   /// A coast son that took no plot: holds its last motion; deleted after
   /// delete_confirmed_misses misses in a row: false when it is to be deleted.
   bool age_coast_son(PointTrack& son, double time);
+  double miss_support() const;  // TrackLife::support of a look without a plot
+  /// The best support of a father and its sons and grandsons (coast sons aside).
+  double family_support(std::int64_t father) const;
   /// A son's start: its father's prediction through the manoeuvre models, updated by `plot`.
   ImmEstimate son_start(int father, const PlotMeasurement& plot) const;
   /// Frees a place under the caps for a branch of `father` scoring `score`; false if the new
@@ -319,8 +326,11 @@ class PointTracker {
     std::int64_t plot_id = 0;
   };
   std::vector<ConfirmedSon> confirmed_sons_;
-  std::vector<std::optional<ImmEstimate>> motion_before_;  // per track: last_detected before
-                                                           // its update (coast sons)
+  struct BeforeUpdate {  // a father before this look's update: what its coast sons start from
+    std::optional<ImmEstimate> motion;  // last_detected
+    double support = 0.0;               // life.support
+  };
+  std::vector<BeforeUpdate> before_update_;  // per track (coast sons)
   struct DoubtfulUpdate {  // a father's non-manoeuvre pair whose plot may be a false alarm
     int track = 0;
     double doubt = 0.0;  // the plot's clutter density over its density under track + clutter

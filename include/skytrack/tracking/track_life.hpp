@@ -12,6 +12,11 @@
 //              chi = (1 - delta) chi- / (1 - delta chi-)
 // A plot much likelier under the track than as clutter raises chi; a miss multiplies the
 // odds by 1 - P_D P_G; clutter alone in the gate leaves them about where they were.
+//
+// Support (the track score of track-oriented MHT, Blackman 2004, IEEE AES Magazine 19(1))
+// per scan: log of the likelihood ratio, target against clutter, of the scan's best single
+// hypothesis: the miss, 1 - P_D P_G, or its likeliest plot as the target, P_D L_i / lambda_i.
+// Two hypotheses of one target compare on it (branching.coast_sons).
 #include <cstdint>
 
 #include "skytrack/config/profile.hpp"
@@ -27,6 +32,7 @@ struct TrackLife {
   int consecutive_misses = 0;
   int hits = 0;
   double existence = 1.0;  // probability that the track is a target (existence method)
+  double support = 0.0;    // summed scan_support of its scans since it started
 };
 
 /// What a scan's outcome did to a track's life.
@@ -46,6 +52,11 @@ LifeChange advance_life(TrackLife& life, bool detected, double position_sigma,
 /// sum_i L_i / lambda_i over the track's gated plots (0 when it had none).
 void update_existence(TrackLife& life, double likelihood_ratio, double detection_probability,
                       double gate_probability, const config::TrackLifeSpec& spec) noexcept;
+
+/// One scan's support (see the top of this file); `best_ratio` is the largest L_i / lambda_i
+/// over the track's gated plots (0 when it had none).
+double scan_support(double best_ratio, double detection_probability,
+                    double gate_probability) noexcept;
 
 /// Starts a life from an initiation that used `plots` plots over `scans` scans.
 TrackLife initiated_life(int plots, int scans) noexcept;
