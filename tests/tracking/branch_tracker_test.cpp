@@ -839,6 +839,44 @@ TEST(BranchTracker, CoastSonReplacesTheFatherOnceItsSupportSinceTheSplitIsHigher
   EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
 }
 
+TEST(BranchTracker, ConfirmedSonWaitsUntilItsSupportPassesItsFathers) {
+  // GIVEN son 2 of track 1 (FatherManoeuvrePairStartsAHiddenSonFromTheFathersLastPlot) in
+  // a clutter density of 15 false plots per km^2, and M-of-N confirmation
+  config::TrackingProfile profile = branch_profile();
+  profile.association.clutter_density = 1.5e-5;
+  profile.track_life.confirmation = config::ConfirmationMethod::kMOfN;
+  Script s(profile);
+  s.start();
+  s.scan(4, {{400.0, 150.0}});
+  ASSERT_EQ(s.events("branch_created"),
+            (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
+  // WHEN its next plot lies in its gate but 150 m off where the turn it started points
+  s.scan(5, {{500.0, 450.0}});
+  // THEN it takes the plot and is confirmed (its third plot), but a plot that likely as
+  // clutter (plus the prior of a manoeuvre, 0.1) does not beat its father's miss: it stays
+  // hidden and the father keeps the number
+  EXPECT_TRUE(s.associated(2, 501));
+  const auto& tracks = s.tracker.tracks();
+  const auto son =
+      std::find_if(tracks.begin(), tracks.end(), [](const PointTrack& t) { return t.id == 2; });
+  ASSERT_NE(son, tracks.end());
+  EXPECT_EQ(son->life.status, TrackStatus::kConfirmed);
+  EXPECT_LT(s.support(2), s.support(1));
+  EXPECT_TRUE(s.events("branch_promoted").empty());
+  EXPECT_EQ(s.live_branches(), 1);
+  // WHEN its next plot lies where it predicts
+  const Gaussian g = ImmFilter::from_profile(profile, 2)->combine(son->estimate);
+  const Eigen::Vector2d next(g.mean[StateLayout::position(0)] + g.mean[StateLayout::velocity(0)],
+                             g.mean[StateLayout::position(1)] + g.mean[StateLayout::velocity(1)]);
+  const double father = s.support(1);
+  s.scan(6, {next});
+  // THEN its support passes the father's (which missed again) and it replaces the father
+  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_GT(s.support(1), father);
+  EXPECT_NEAR(s.track(1)->position.x(), next.x(), 30.0);
+  EXPECT_NEAR(s.track(1)->position.y(), next.y(), 30.0);
+}
+
 TEST(BranchTracker, CoastSonNotConfirmedWithinItsWindowIsPruned) {
   // GIVEN coast son 2 of CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather (t = 6),
   // with branching.coast_son_looks 2 and misses that would not delete it before 10 looks
