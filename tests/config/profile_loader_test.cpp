@@ -45,7 +45,7 @@ TEST(ProfileLoader, EveryShippedProfileLoads) {
     const auto profile = load_profile(entry.path().string());
     EXPECT_TRUE(profile) << profile.error().message;
   }
-  EXPECT_GE(files, 8);
+  EXPECT_GE(files, 7);
 }
 
 TEST(ProfileLoader, ShippedDefaultProfileEqualsTheCompiledDefaults) {
@@ -359,7 +359,7 @@ TEST(ProfileLoader, CoastSonsAndTheHeldMotionsNoiseNeedCoastOnLastMotion) {
   EXPECT_EQ(profile->branching.coast_sons, 3);
   EXPECT_DOUBLE_EQ(profile->branching.coast_son_doubt, 0.2);
   EXPECT_DOUBLE_EQ(profile->branching.last_motion_accel_sigma, 0.5);
-  EXPECT_EQ(TrackingProfile{}.branching.coast_sons, 3);
+  EXPECT_EQ(TrackingProfile{}.branching.coast_sons, 5);
   EXPECT_DOUBLE_EQ(TrackingProfile{}.branching.last_motion_accel_sigma, 0.5);
   EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: false\n  coast_sons: 1\n"),
               ::testing::HasSubstr("coast_sons: needs coast_on_last_motion: true"));

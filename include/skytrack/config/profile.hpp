@@ -200,7 +200,7 @@ struct BranchingSpec {
   // father in a look where it takes a plot and its TrackLife::support passes the father's
   // and the father's sons' and grandsons'. At most this many per father (the oldest
   // untouched goes); deleted after track_life.delete_confirmed_misses misses in a row.
-  int coast_sons = 3;
+  int coast_sons = 5;
   double coast_son_doubt = 0.1;
   // The coast sons' decision window (0: none): a coast son that has not replaced its father
   // within this many looks of its split is pruned, the father's plots then standing (the
