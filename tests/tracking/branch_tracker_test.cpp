@@ -96,6 +96,13 @@ struct Script {
     return std::any_of(frame.associations.begin(), frame.associations.end(),
                        [&](const Association& a) { return a.track == track && a.plot == plot; });
   }
+  /// The probability of the association (track, plot) in the latest frame (0 if none).
+  double probability(std::int64_t track, std::int64_t plot) const {
+    for (const Association& a : frame.associations) {
+      if (a.track == track && a.plot == plot) return a.probability;
+    }
+    return 0.0;
+  }
   /// Track 1 (start()) in a clutter area misses at t = 4 and 5, and at t = 6 takes a false
   /// plot 60 m left of its line, which splits coast son 2 (with coast_son_profile()).
   void split_coast_son() {
@@ -739,6 +746,32 @@ TEST(BranchTracker, LastMotionGateLeavesATurnModesPlotToASon) {
               (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
     EXPECT_NEAR(s.track(1)->position.y(), 0.0, 1.0);
   }
+}
+
+TEST(BranchTracker, FatherOnItsLastMotionWeighsItsPlotsOnIt) {
+  // GIVEN confirmed track 1 flying straight east with a noisy IMM (50 m/s^2) and a quiet last
+  // motion (0.5 m/s^2), and at t = 4 two plots in both its gates: one on its straight line,
+  // one 80 m off it
+  double off_line[2] = {};
+  for (const bool last_motion : {true, false}) {
+    SCOPED_TRACE(last_motion ? "non_manoeuvre_gate last_motion" : "union");
+    config::TrackingProfile profile = branch_profile();
+    profile.motion_models[0].accel_sigma = 50.0;
+    profile.branching.coast_on_last_motion = true;
+    profile.branching.last_motion_accel_sigma = 0.5;
+    if (last_motion) profile.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kLastMotion;
+    Script s(profile);
+    s.start();
+    s.scan(4, {{400.0, 0.0}, {400.0, 80.0}});
+    ASSERT_TRUE(s.associated(1, 401));
+    ASSERT_TRUE(s.associated(1, 402));
+    off_line[last_motion ? 0 : 1] = s.probability(1, 402);
+  }
+  // THEN gated on its last motion it also weighs them on it: the plot off the line gets
+  // about half the weight the IMM's wider prediction gives it (0.10 against 0.20)
+  EXPECT_LT(off_line[0], 0.12);
+  EXPECT_GT(off_line[1], 0.15);
+  EXPECT_LT(off_line[0], 0.6 * off_line[1]);
 }
 
 TEST(BranchTracker, SonConfirmedOnExistenceWeighsItsPlotsAgainstTheClutter) {
