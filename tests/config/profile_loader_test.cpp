@@ -24,6 +24,11 @@ std::string error_of(const std::string& body) {
   return profile ? std::string("(no error)") : profile.error().message;
 }
 
+/// A profile whose only keys besides its identity are `branching: {keys}`.
+Expected<TrackingProfile> with_branching(const std::string& keys) {
+  return parse_profile(kHeader + ("branching: {" + keys + "}\n"), "p.yaml");
+}
+
 TEST(ProfileLoader, ShippedDefaultProfileLoads) {
   const auto profile = load_profile(kDefaultProfile);
   ASSERT_TRUE(profile) << profile.error().message;
@@ -313,21 +318,18 @@ TEST(ProfileLoader, ManoeuvreAccelerationMustBePositive) {
               ::testing::HasSubstr("branching.manoeuvre_accel_sigma"));
   EXPECT_THAT(error_of("branching:\n  ambiguity_beta: 0\n"),
               ::testing::HasSubstr("branching.ambiguity_beta"));
-  const auto profile = parse_profile(
-      "profile: {name: p, version: '1'}\nbranching: {manoeuvre_accel_sigma: 35.5}\n", "p.yaml");
+  const auto profile = with_branching("manoeuvre_accel_sigma: 35.5");
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_DOUBLE_EQ(profile->branching.manoeuvre_accel_sigma, 35.5);
 }
 
 TEST(ProfileLoader, CoastOnLastMotionIsASwitch) {
-  const auto profile = parse_profile(
-      "profile: {name: p, version: '1'}\nbranching: {coast_on_last_motion: true}\n", "p.yaml");
+  const auto profile = with_branching("coast_on_last_motion: true");
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_TRUE(profile->branching.coast_on_last_motion);
   EXPECT_TRUE(TrackingProfile{}.branching.coast_on_last_motion);
   // Off alone: the options that need it keep their (inert) defaults without an error.
-  const auto off = parse_profile(
-      "profile: {name: p, version: '1'}\nbranching: {coast_on_last_motion: false}\n", "p.yaml");
+  const auto off = with_branching("coast_on_last_motion: false");
   ASSERT_TRUE(off) << off.error().message;
   EXPECT_FALSE(off->branching.coast_on_last_motion);
   EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: 2\n"),
@@ -335,10 +337,8 @@ TEST(ProfileLoader, CoastOnLastMotionIsASwitch) {
 }
 
 TEST(ProfileLoader, LastMotionGateNeedsCoastOnLastMotion) {
-  const auto profile = parse_profile(
-      "profile: {name: p, version: '1'}\n"
-      "branching: {coast_on_last_motion: true, non_manoeuvre_gate: last_motion}\n",
-      "p.yaml");
+  const auto profile =
+      with_branching("coast_on_last_motion: true, non_manoeuvre_gate: last_motion");
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_EQ(profile->branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
   EXPECT_EQ(TrackingProfile{}.branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
@@ -350,11 +350,9 @@ TEST(ProfileLoader, LastMotionGateNeedsCoastOnLastMotion) {
 }
 
 TEST(ProfileLoader, CoastSonsAndTheHeldMotionsNoiseNeedCoastOnLastMotion) {
-  const auto profile = parse_profile(
-      "profile: {name: p, version: '1'}\n"
-      "branching: {coast_on_last_motion: true, coast_sons: 3, coast_son_doubt: 0.2,\n"
-      "            last_motion_accel_sigma: 0.5}\n",
-      "p.yaml");
+  const auto profile = with_branching(
+      "coast_on_last_motion: true, coast_sons: 3, coast_son_doubt: 0.2, last_motion_accel_sigma: "
+      "0.5");
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_EQ(profile->branching.coast_sons, 3);
   EXPECT_DOUBLE_EQ(profile->branching.coast_son_doubt, 0.2);
@@ -373,11 +371,9 @@ TEST(ProfileLoader, CoastSonsAndTheHeldMotionsNoiseNeedCoastOnLastMotion) {
 }
 
 TEST(ProfileLoader, CoastSonWindowAndClutterAreaLastMotionNeedTheirOptions) {
-  const auto profile = parse_profile(
-      "profile: {name: p, version: '1'}\n"
-      "branching: {coast_on_last_motion: true, coast_sons: 3, coast_son_looks: 6,\n"
-      "            last_motion_false_plots: 0.3}\n",
-      "p.yaml");
+  const auto profile = with_branching(
+      "coast_on_last_motion: true, coast_sons: 3, coast_son_looks: 6, last_motion_false_plots: "
+      "0.3");
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_EQ(profile->branching.coast_son_looks, 6);
   EXPECT_DOUBLE_EQ(profile->branching.last_motion_false_plots, 0.3);
@@ -393,8 +389,7 @@ TEST(ProfileLoader, CoastSonWindowAndClutterAreaLastMotionNeedTheirOptions) {
 }
 
 TEST(ProfileLoader, BranchConfirmationIsMOfNOrExistence) {
-  const auto profile = parse_profile(
-      "profile: {name: p, version: '1'}\nbranching: {confirmation: m_of_n}\n", "p.yaml");
+  const auto profile = with_branching("confirmation: m_of_n");
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_EQ(profile->branching.confirmation, ConfirmationMethod::kMOfN);
   EXPECT_EQ(TrackingProfile{}.branching.confirmation, ConfirmationMethod::kExistence);
