@@ -3,9 +3,9 @@
 // leave unexplained (in no gate, or no track's most likely plot: the tracker decides) become
 // seeds; a later plot whose distance to a seed implies a speed within
 // [min_speed, max_speed] forms a candidate chain, which grows by the nearest plot to its
-// constant-velocity prediction. A chain with M plots within N scans becomes a tentative
-// track; chains that cannot reach M in time are dropped. Chains are cheap (no filter), so
-// dense clutter costs seeds, not IMM tracks.
+// constant-velocity prediction (nearest pairs over all chains first). A chain with M plots within N
+// scans becomes a tentative track; chains that cannot reach M in time are dropped. Chains are cheap
+// (no filter), so dense clutter costs seeds, not IMM tracks.
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -59,6 +59,11 @@ class Initiator {
     std::uint64_t last_batch = 0;
     int looks = 0;  // looks spanned, from the first plot's on, inclusive
   };
+  struct Extension {  // a plot in a chain's gate, at `distance` from its prediction
+    double distance = 0.0;
+    int chain = 0;
+    int plot = 0;
+  };
 
   void extend_chains(std::uint64_t batch, const std::vector<PlotMeasurement>& plots);
   void pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasurement>& plots);
@@ -81,6 +86,7 @@ class Initiator {
   std::vector<Eigen::Vector3d> seed_positions_;
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> used_;
+  std::vector<Extension> extensions_;
   std::vector<int> neighbours_;
   PlotIndex index_;
 };

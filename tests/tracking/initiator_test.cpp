@@ -1,0 +1,65 @@
+// Tests of plot-to-plot initiation: a target's chain keeps its own plot when a clutter
+// chain's wide gate reaches it too, and a chain of M plots within N looks starts a track.
+#include "skytrack/tracking/initiator.hpp"
+
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace skytrack {
+namespace {
+
+PlotMeasurement plot(std::int64_t id, double time, double x, double y) {
+  PlotMeasurement p;
+  MeasVec sigma = MeasVec::Constant(2, 50.0);
+  p.model = MeasurementModel::cartesian(2, 2, sigma);
+  p.z = MeasVec::Zero(2);
+  p.z << x, y;
+  p.time = time;
+  p.plot_id = id;
+  return p;
+}
+
+std::vector<std::int64_t> ids(const Initiation& initiation) {
+  std::vector<std::int64_t> out;
+  for (const PlotMeasurement& p : initiation.plots) out.push_back(p.plot_id);
+  return out;
+}
+
+const Initiator::Coverage kEverywhere = [](const Eigen::Vector3d&) { return true; };
+
+TEST(Initiator, TargetChainKeepsItsPlotAgainstAnOlderClutterChain) {
+  Initiator initiator(config::InitiationSpec{}, 2);
+  // Target 1 east at 250 m/s from the origin; clutter plots 2 north-east at 150 m/s, whose
+  // chain is made first (its plot comes first in the second batch).
+  ASSERT_TRUE(
+      initiator.step(1, 10.0, {plot(11, 10.0, 0, 0), plot(21, 10.0, 4000, -4000)}, kEverywhere)
+          .empty());
+  ASSERT_TRUE(
+      initiator.step(2, 20.0, {plot(22, 20.0, 4000, -2500), plot(12, 20.0, 2500, 0)}, kEverywhere)
+          .empty());
+  ASSERT_EQ(initiator.candidates(), 2u);
+  // The target's third plot lies on its chain's prediction and 1.4 km from the clutter
+  // chain's, inside that chain's 6 g gate (3.4 km): the nearer chain takes it.
+  const std::vector<Initiation>& started =
+      initiator.step(3, 30.0, {plot(13, 30.0, 5000, 0)}, kEverywhere);
+  ASSERT_EQ(started.size(), 1u);
+  EXPECT_EQ(ids(started.front()), (std::vector<std::int64_t>{11, 12, 13}));
+  EXPECT_EQ(started.front().scans, 3);
+}
+
+TEST(Initiator, ChainWithoutItsThirdPlotWithinNLooksIsDropped) {
+  config::InitiationSpec spec;
+  spec.n = 3;  // m = 3 of n = 3: no look may be missed
+  Initiator initiator(spec, 2);
+  initiator.step(1, 10.0, {plot(1, 10.0, 0, 0)}, kEverywhere);
+  initiator.step(2, 20.0, {plot(2, 20.0, 2500, 0)}, kEverywhere);
+  ASSERT_EQ(initiator.candidates(), 1u);
+  EXPECT_TRUE(initiator.step(3, 30.0, {}, kEverywhere).empty());
+  EXPECT_EQ(initiator.candidates(), 0u);
+  EXPECT_TRUE(initiator.step(4, 40.0, {plot(4, 40.0, 7500, 0)}, kEverywhere).empty());
+}
+
+}  // namespace
+}  // namespace skytrack
