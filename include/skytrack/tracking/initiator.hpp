@@ -3,9 +3,9 @@
 // leave unexplained (in no gate, or no track's most likely plot: the tracker decides) become
 // seeds; a later plot whose distance to a seed implies a speed within
 // [min_speed, max_speed] forms a candidate chain, which grows by the nearest plot to its
-// constant-velocity prediction (nearest pairs over all chains first). A chain with M plots within N
-// scans becomes a tentative track; chains that cannot reach M in time are dropped. Chains are cheap
-// (no filter), so dense clutter costs seeds, not IMM tracks.
+// constant-velocity prediction, the nearest chain-plot pairs first. A chain with M plots
+// within N scans becomes a tentative track; chains that cannot reach M in time are dropped.
+// Chains are cheap (no filter), so dense clutter costs seeds, not IMM tracks.
 #include <cstdint>
 #include <functional>
 #include <vector>
