@@ -274,6 +274,10 @@ BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingPro
   s.integer("coast_sons", b.coast_sons, Range::non_negative());
   s.number("coast_son_doubt", b.coast_son_doubt, kOpenUnit);
   s.integer("coast_son_looks", b.coast_son_looks, Range::non_negative());
+  YamlSection chain = s.section("detectability");
+  chain.number("hide", b.detectability.hide, Range::probability());
+  chain.number("reveal", b.detectability.reveal, Range::open_probability());
+  chain.finish();
   s.integer("max_branches_per_father", b.max_branches_per_father, kAtLeastOne);
   s.integer("max_total_branches", b.max_total_branches, kAtLeastOne);
   s.finish();

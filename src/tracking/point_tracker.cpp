@@ -540,7 +540,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   track.quality = 0.8 * track.quality + 0.2 * detection;
   update_existence(track.life, ratios.sum, pd, profile_.association.gate_probability,
                    profile_.track_life);
-  track.life.support += scan_support(ratios.best, pd, profile_.association.gate_probability);
+  add_support(track.life, ratios, t);
   bool detected = detection > 0.5;
   if (holds_last_motion() && is_reported_as_firm(track.life.status) &&
       static_cast<std::size_t>(t) < dense_.size() && dense_[t] != 0) {
@@ -658,6 +658,26 @@ ImmEstimate PointTracker::start_estimate(const Initiation& initiation, TrackLife
                               profile_.association.gate_probability, density);
   }
   return estimate;
+}
+
+config::DetectabilitySpec PointTracker::detectability_at(int t) const {
+  // Masking is a clutter area's (branching.last_motion_false_plots): elsewhere a miss is
+  // independent of the last, as P_D says.
+  config::DetectabilitySpec chain = profile_.branching.detectability;
+  if (static_cast<std::size_t>(t) >= dense_.size() || dense_[t] == 0) chain.hide = 0.0;
+  return chain;
+}
+
+void PointTracker::add_support(TrackLife& life, const PlotRatios& ratios, int where) const {
+  const double pd = support_detection_probability(life, profile_.association.detection_probability,
+                                                  detectability_at(where));
+  life.support += scan_support(ratios.best, pd, profile_.association.gate_probability);
+  update_detectability(life, ratios.sum, where);
+}
+
+void PointTracker::update_detectability(TrackLife& life, double likelihood_ratio, int where) const {
+  skytrack::update_detectability(life, likelihood_ratio, profile_.association.detection_probability,
+                                 profile_.association.gate_probability, detectability_at(where));
 }
 
 void PointTracker::note_explained(const std::vector<Candidate>& pool, std::span<const int> mine,

@@ -210,8 +210,8 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
         std::optional<ImmEstimate> last_detected;
         if (split && holds_last_motion()) last_detected = tracks_[t].last_detected;
         if (kind == PairKind::kFatherNonManoeuvre && profile_.branching.coast_sons > 0) {
-          before_update_[static_cast<std::size_t>(t)] = {tracks_[t].last_detected,
-                                                         tracks_[t].life.support};
+          before_update_[static_cast<std::size_t>(t)] = {
+              tracks_[t].last_detected, tracks_[t].life.support, tracks_[t].life.detectable};
         }
         if (kind == PairKind::kFatherNonManoeuvre) update_father(t, mine, beta, miss, frame);
         // A doomed father takes no non-manoeuvre pair but may start sons, so that a
@@ -483,7 +483,9 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
     son.life.existence = std::clamp(d.doubt, profile_.track_life.initial_existence,
                                     profile_.track_life.confirm_existence);
     // The target missed in this look: the father's support before its plot, and a miss.
-    son.life.support = before.support + miss_support();
+    son.life.support = before.support;
+    son.life.detectable = before.detectable;
+    add_support(son.life, {}, d.track);  // in its father's clutter
     son.last_detected = before.motion;
     son.estimate = *last_motion(son, frame.time, true);
     son.quality = quality;
@@ -501,13 +503,15 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
   doubtful_.clear();
 }
 
-double PointTracker::miss_support() const {
-  return scan_support(0.0, profile_.association.detection_probability,
-                      profile_.association.gate_probability);
+double PointTracker::miss_score(int t) const {
+  return log_of(1.0 - support_detection_probability(tracks_[t].life,
+                                                    profile_.association.detection_probability,
+                                                    detectability_at(t)));
 }
 
-bool PointTracker::age_coast_son(PointTrack& son, double time) {
-  son.life.support += miss_support();
+bool PointTracker::age_coast_son(int t, double time) {
+  PointTrack& son = tracks_[t];
+  add_support(son.life, {}, t);
   son.life.history <<= 1;
   ++son.life.scans;
   ++son.life.consecutive_misses;
@@ -577,8 +581,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   }
   const PlotRatios ratios = soft_update(t, pool, u.candidates, u.beta, u.miss, number, frame);
   const double likelihood_ratio = ratios.sum;
-  branch.life.support += scan_support(ratios.best, profile_.association.detection_probability,
-                                      profile_.association.gate_probability);
+  add_support(branch.life, ratios, t);
   branch.quality = 0.8 * branch.quality + 0.2 * (1.0 - u.miss);
   branch.last_plot = plots_[pair.plot];
   branch.last_plot_batch = batches_;
@@ -755,7 +758,6 @@ bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double sc
 }
 
 void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
-  const double miss = log_of(1.0 - profile_.association.detection_probability);
   const int window = profile_.branching.coast_son_looks;
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     PointTrack& branch = tracks_[i];
@@ -764,11 +766,12 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
       continue;
     }
     const bool touched = touched_[i] != 0;
+    const double miss = miss_score(static_cast<int>(i));
     if (branch.coast_son) {
       std::string reason;
       if (!touched) {
         branch.score += miss;
-        if (!age_coast_son(branch, frame.time)) {
+        if (!age_coast_son(static_cast<int>(i), frame.time)) {
           reason = "no plot in delete_confirmed_misses (" +
                    std::to_string(profile_.track_life.delete_confirmed_misses) + ") looks";
         }
@@ -792,6 +795,7 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
       update_existence(branch.life, 0.0, profile_.association.detection_probability,
                        profile_.association.gate_probability, profile_.track_life);
     }
+    update_detectability(branch.life, 0.0, static_cast<int>(i));
     if (advance_life(branch.life, false, spread, life_of(branch)).deleted) {
       changes_.clear();
       tree_.remove(branch.id, changes_);

@@ -34,6 +34,27 @@ void update_existence(TrackLife& life, double likelihood_ratio, double detection
   life.existence = std::isfinite(updated) ? std::clamp(updated, 1e-9, 1.0 - 1e-9) : predicted;
 }
 
+namespace {
+double predicted_detectability(const TrackLife& life,
+                               const config::DetectabilitySpec& spec) noexcept {
+  return (1.0 - spec.hide) * life.detectable + spec.reveal * (1.0 - life.detectable);
+}
+}  // namespace
+
+double support_detection_probability(const TrackLife& life, double detection_probability,
+                                     const config::DetectabilitySpec& spec) noexcept {
+  return detection_probability * predicted_detectability(life, spec);
+}
+
+void update_detectability(TrackLife& life, double likelihood_ratio, double detection_probability,
+                          double gate_probability, const config::DetectabilitySpec& spec) noexcept {
+  const double predicted = predicted_detectability(life, spec);
+  const double ratio = std::isfinite(likelihood_ratio) ? std::max(likelihood_ratio, 0.0) : 0.0;
+  const double seen = predicted * (1.0 - detection_probability * (gate_probability - ratio));
+  const double updated = seen / (seen + 1.0 - predicted);
+  life.detectable = std::isfinite(updated) ? std::clamp(updated, 1e-9, 1.0) : predicted;
+}
+
 LifeChange advance_life(TrackLife& life, bool detected, double position_sigma,
                         const config::TrackLifeSpec& spec) noexcept {
   LifeChange change;

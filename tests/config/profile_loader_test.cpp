@@ -370,6 +370,21 @@ TEST(ProfileLoader, CoastSonsAndTheHeldMotionsNoiseNeedCoastOnLastMotion) {
               ::testing::HasSubstr("branching.coast_son_doubt"));
 }
 
+TEST(ProfileLoader, DetectabilityChainReadsItsTwoProbabilities) {
+  const auto profile = with_branching("detectability: {hide: 0.1, reveal: 0.5}");
+  ASSERT_TRUE(profile) << profile.error().message;
+  EXPECT_DOUBLE_EQ(profile->branching.detectability.hide, 0.1);
+  EXPECT_DOUBLE_EQ(profile->branching.detectability.reveal, 0.5);
+  EXPECT_EQ(TrackingProfile{}.branching.detectability,
+            (config::DetectabilitySpec{.hide = 0.05, .reveal = 0.3}));
+  EXPECT_THAT(error_of("branching:\n  detectability: {hide: 1.5}\n"),
+              ::testing::HasSubstr("branching.detectability.hide"));
+  EXPECT_THAT(error_of("branching:\n  detectability: {reveal: 0}\n"),
+              ::testing::HasSubstr("branching.detectability.reveal"));
+  EXPECT_THAT(error_of("branching:\n  detectability: {hidden: 0.1}\n"),
+              ::testing::HasSubstr("branching.detectability.hidden"));
+}
+
 TEST(ProfileLoader, CoastSonWindowAndClutterAreaLastMotionNeedTheirOptions) {
   const auto profile = with_branching(
       "coast_on_last_motion: true, coast_sons: 3, coast_son_looks: 6, last_motion_false_plots: "

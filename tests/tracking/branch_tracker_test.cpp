@@ -38,6 +38,7 @@ config::TrackingProfile branch_profile() {
   p.branching.confirmation = config::ConfirmationMethod::kMOfN;
   p.branching.coast_sons = 0;
   p.branching.coast_son_looks = 0;
+  p.branching.detectability.hide = 0.0;  // independent misses
   return p;
 }
 
@@ -870,6 +871,53 @@ TEST(BranchTracker, CoastSonReplacesTheFatherOnceItsSupportSinceTheSplitIsHigher
                 "1: son 2 of track 1 replaces track 1: confirmed with plot 701 (rule 10)"}));
   EXPECT_GT(s.support(1), father);
   EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
+}
+
+TEST(BranchTracker, DetectabilityChainCountsMaskedMissesOnlyInAClutterArea) {
+  // GIVEN coast son 2 of CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather (split at
+  // t = 6), the clutter area told by branching.last_motion_false_plots, and
+  // branching.detectability on (hide 0.05, reveal 0.3) or off
+  struct Run {
+    double detectable = 0.0;  // the son's, after the split
+    double miss = 0.0;        // what its next miss adds to its support
+    double father = 0.0;
+    std::vector<std::string> events;
+  };
+  const auto run = [](double false_plots, double hide) {
+    config::TrackingProfile profile = coast_son_profile();
+    profile.branching.last_motion_false_plots = false_plots;
+    profile.branching.detectability.hide = hide;
+    Script s(profile);
+    s.split_coast_son();
+    Run r;
+    for (const PointTrack& t : s.tracker.tracks()) {
+      if (t.id == 2) r.detectable = t.life.detectable;
+    }
+    const double before = s.support(2);
+    // WHEN at t = 7 the father takes another false plot, left of its line, and the son misses
+    s.scan(7, {{700.0, 90.0}});
+    EXPECT_TRUE(s.associated(1, 701));
+    EXPECT_FALSE(s.associated(2, 701));
+    r.miss = s.support(2) - before;
+    r.father = s.support(1);
+    r.events = s.events("branch_created");
+    return r;
+  };
+  const double miss = std::log(1.0 - 0.9 * 0.999);  // P_D 0.9, P_G 0.999
+  // THEN in a clutter area (the last motion's gate expects 0.3 false plots or more) the
+  // son's miss at the split made "hidden" likelier, and its next miss costs less
+  const Run plain = run(0.3, 0.0), masked = run(0.3, 0.05);
+  EXPECT_DOUBLE_EQ(plain.detectable, 1.0);
+  EXPECT_NEAR(plain.miss, miss, 1e-9);
+  EXPECT_LT(masked.detectable, 0.7);
+  const double predicted = 0.95 * masked.detectable + 0.3 * (1.0 - masked.detectable);
+  EXPECT_NEAR(masked.miss, std::log(1.0 - 0.9 * predicted * 0.999), 1e-9);
+  EXPECT_GT(masked.miss, miss + 0.8);
+  // AND where no gate expects that many (clear sky), the chain changes nothing
+  const Run clear = run(1e9, 0.0), clear_masked = run(1e9, 0.05);
+  EXPECT_NEAR(clear_masked.miss, miss, 1e-9);
+  EXPECT_DOUBLE_EQ(clear_masked.father, clear.father);
+  EXPECT_EQ(clear_masked.events, clear.events);
 }
 
 TEST(BranchTracker, ConfirmedSonWaitsUntilItsSupportPassesItsFathers) {

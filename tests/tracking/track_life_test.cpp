@@ -92,6 +92,49 @@ TEST(TrackLife, SupportIsTheLogRatioOfTheScansBestHypothesis) {
   EXPECT_TRUE(std::isfinite(scan_support(0.0, 1.0, 1.0 - 1e-12)));
 }
 
+TEST(TrackLife, DetectabilityChainMakesARunOfMissesCheaperThanIndependentMisses) {
+  // GIVEN P_D 0.9, P_G 0.999 and the default chain: hidden with 0.05, detectable again with
+  // 0.3 per scan; a track just detected (detectability 1)
+  const config::DetectabilitySpec chain{.hide = 0.05, .reveal = 0.3};
+  TrackLife life;
+  // WHEN it misses four scans in a row with nothing in its gate
+  double support = 0.0;
+  double predicted = 0.95;  // (1 - hide) * 1 + reveal * 0
+  for (int scan = 0; scan < 4; ++scan) {
+    const double pd = support_detection_probability(life, 0.9, chain);
+    EXPECT_NEAR(pd, 0.9 * predicted, 1e-12);
+    support += scan_support(0.0, pd, 0.999);
+    update_detectability(life, 0.0, 0.9, 0.999, chain);
+    // by hand: a hidden target explains the miss at 1, a detectable one at 1 - P_D P_G
+    const double seen = predicted * (1.0 - 0.9 * 0.999);
+    EXPECT_NEAR(life.detectable, seen / (seen + 1.0 - predicted), 1e-12);
+    predicted = 0.95 * life.detectable + 0.3 * (1.0 - life.detectable);
+  }
+  // THEN each miss costs less than the one before, and the run about -3.9 instead of the
+  // -9.2 of four independent misses at 1 - P_D
+  EXPECT_NEAR(support, -3.87, 0.02);
+  EXPECT_LT(4.0 * std::log(1.0 - 0.9 * 0.999), support - 5.0);
+  // WHEN the target returns with a plot 20 times likelier under the track than as clutter
+  const double pd = support_detection_probability(life, 0.9, chain);
+  EXPECT_LT(pd, 0.35);  // a return after four misses is itself less likely
+  EXPECT_NEAR(scan_support(20.0, pd, 0.999), std::log(pd * 20.0), 1e-12);
+  update_detectability(life, 20.0, 0.9, 0.999, chain);
+  // THEN the target is detectable again, nearly surely
+  EXPECT_GT(life.detectable, 0.9);
+  // AND clutter alone in the gate (likelihoods summing to P_G) leaves the odds unchanged
+  TrackLife cluttered;
+  cluttered.detectable = 0.6;
+  update_detectability(cluttered, 0.999, 0.9, 0.999, chain);
+  EXPECT_NEAR(cluttered.detectable, 0.95 * 0.6 + 0.3 * 0.4, 1e-12);
+  // AND hide 0 keeps every scan at P_D: independent misses
+  TrackLife plain;
+  const config::DetectabilitySpec off{.hide = 0.0, .reveal = 0.3};
+  for (int scan = 0; scan < 4; ++scan) {
+    EXPECT_NEAR(support_detection_probability(plain, 0.9, off), 0.9, 1e-12);
+    update_detectability(plain, 0.0, 0.9, 0.999, off);
+  }
+}
+
 TEST(TrackLife, ConfirmsOnMOfNCountedFromTheFirstPlot) {
   // GIVEN a track initiated from 2 plots in 2 scans
   TrackLife life = initiated_life(2, 2);

@@ -82,6 +82,15 @@ struct ClutterMapSpec {
   bool operator==(const ClutterMapSpec&) const = default;
 };
 
+/// A target's detectability as a two-state Markov chain per scan (Musicki, Evans & Stankovic
+/// 1994, IEEE Trans. AC-39(6), "Markov chain two"): detectable, seen with P_D, or hidden
+/// (masked by clutter, faded, shadowed), seen with 0.
+struct DetectabilitySpec {
+  double hide = 0.05;   // P(detectable -> hidden) per scan; 0: misses independent at 1 - P_D
+  double reveal = 0.3;  // P(hidden -> detectable) per scan
+  bool operator==(const DetectabilitySpec&) const = default;
+};
+
 struct AssociationSpec {
   AssociationMethod method = AssociationMethod::kJpda;
   double gate_probability = 0.999;     // P_G of the (non-manoeuvre) validation gate, in (0, 1)
@@ -206,6 +215,13 @@ struct BranchingSpec {
   // within this many looks of its split is pruned, the father's plots then standing (the
   // N-scan pruning of a multi-hypothesis tracker, on the miss-or-false-alarm question).
   int coast_son_looks = 6;
+  // The chain by which TrackLife::support, and the branches' scores, count misses where the
+  // last motion's gate expects last_motion_false_plots or more (a clutter area, where a
+  // target is masked for looks on end): a run of misses there costs less than independent
+  // misses at 1 - P_D, so that a coast son that took the target's returning plot can pass a
+  // father that took false plots meanwhile. Elsewhere, and in JPDA, existence and the
+  // filter everywhere, P_D alone.
+  DetectabilitySpec detectability;
   int max_branches_per_father = 12;  // sons + grandsons of one father (3 + 9 at 3 children)
   int max_total_branches = 2000;     // in the whole tracker: bounds time and memory
   bool operator==(const BranchingSpec&) const = default;

@@ -229,8 +229,14 @@ class PointTracker {
   void start_coast_sons(ScanReport& report, TrackFrame& frame);
   /// A coast son that took no plot: holds its last motion; deleted after
   /// delete_confirmed_misses misses in a row: false when it is to be deleted.
-  bool age_coast_son(PointTrack& son, double time);
-  double miss_support() const;  // TrackLife::support of a look without a plot
+  bool age_coast_son(int t, double time);
+  // One scan's TrackLife::support (no ratios: a miss) and detectability on the chain of
+  // branching.detectability where track `where` is (detectability_at); the score of track
+  // t's miss on the same chain.
+  config::DetectabilitySpec detectability_at(int where) const;
+  void add_support(TrackLife& life, const PlotRatios& ratios, int where) const;
+  void update_detectability(TrackLife& life, double likelihood_ratio, int where) const;
+  double miss_score(int t) const;
   /// The best support of a father and its sons and grandsons (coast sons aside).
   double family_support(std::int64_t father) const;
   /// A son's start: its father's prediction through the manoeuvre models, updated by `plot`.
@@ -329,6 +335,7 @@ class PointTracker {
   struct BeforeUpdate {  // a father before this look's update: what its coast sons start from
     std::optional<ImmEstimate> motion;  // last_detected
     double support = 0.0;               // life.support
+    double detectable = 1.0;            // life.detectable
   };
   std::vector<BeforeUpdate> before_update_;  // per track (coast sons)
   struct DoubtfulUpdate {  // a father's non-manoeuvre pair whose plot may be a false alarm

@@ -17,6 +17,17 @@
 // per scan: log of the likelihood ratio, target against clutter, of the scan's best single
 // hypothesis: the miss, 1 - P_D P_G, or its likeliest plot as the target, P_D L_i / lambda_i.
 // Two hypotheses of one target compare on it (branching.coast_sons).
+//
+// Detectability (branching.detectability, Musicki et al.'s "Markov chain two"), for the support
+// only, where the tracker applies it (a clutter area): the probability d that the target is
+// detectable, not hidden, predicted per scan
+//   d- = (1 - hide) d + reveal (1 - d)
+// and updated like the existence, a hidden target's plots being all clutter:
+//   d = d- (1 - delta) / (d- (1 - delta) + 1 - d-),  delta as above.
+// The support then weighs the scan at P_D d-: after a miss with nothing in the gate the next
+// miss costs less (four in a row from a detection at P_D 0.9, hide 0.05, reveal 0.3: log of
+// 0.145, 0.35, 0.61, 0.69 instead of log 0.1 each), a target masked for a few looks being
+// likelier than independent misses say.
 #include <cstdint>
 
 #include "skytrack/config/profile.hpp"
@@ -31,8 +42,9 @@ struct TrackLife {
   int scans = 0;              // scans since the first plot, inclusive
   int consecutive_misses = 0;
   int hits = 0;
-  double existence = 1.0;  // probability that the track is a target (existence method)
-  double support = 0.0;    // summed scan_support of its scans since it started
+  double existence = 1.0;   // probability that the track is a target (existence method)
+  double support = 0.0;     // summed scan_support of its scans since it started
+  double detectable = 1.0;  // probability that the target was detectable in the last scan
 };
 
 /// What a scan's outcome did to a track's life.
@@ -57,6 +69,16 @@ void update_existence(TrackLife& life, double likelihood_ratio, double detection
 /// over the track's gated plots (0 when it had none).
 double scan_support(double best_ratio, double detection_probability,
                     double gate_probability) noexcept;
+
+/// The detection probability with which the track's next scan counts in its support: P_D
+/// times its predicted detectability.
+double support_detection_probability(const TrackLife& life, double detection_probability,
+                                     const config::DetectabilitySpec& spec) noexcept;
+
+/// One scan's detectability update (see the top of this file), after the support of that
+/// scan; `likelihood_ratio` as for update_existence.
+void update_detectability(TrackLife& life, double likelihood_ratio, double detection_probability,
+                          double gate_probability, const config::DetectabilitySpec& spec) noexcept;
 
 /// Starts a life from an initiation that used `plots` plots over `scans` scans.
 TrackLife initiated_life(int plots, int scans) noexcept;
