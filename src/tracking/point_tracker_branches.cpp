@@ -857,11 +857,12 @@ void PointTracker::find_lost_fathers(const PlotScan& scan) {
   }
 }
 
-int PointTracker::lost_father_of(const PlotMeasurement& plot) {
+int PointTracker::lost_father_of(const PlotMeasurement& plot, double* nis) {
   const Eigen::Vector3d position = approximate_position(plot);
   int best = -1;
   double best_nis = manoeuvre_threshold_[plot.model.size()];
   for (LostFather& lost : lost_fathers_) {
+    if (tracks_[static_cast<std::size_t>(lost.track)].replaced) continue;  // earlier this batch
     if ((position - lost.reach.centre).norm() > lost.reach.radius) continue;
     if (std::none_of(lost.modes.begin(), lost.modes.end(), [&](const Sphere& m) {
           return (position - m.centre).squaredNorm() <= m.radius * m.radius;
@@ -879,16 +880,28 @@ int PointTracker::lost_father_of(const PlotMeasurement& plot) {
       best = lost.track;
     }
   }
+  if (nis != nullptr) *nis = best_nis;
   return best;
 }
 
 void PointTracker::continue_lost_fathers(ScanReport& report, TrackFrame& frame) {
+  // Nearest first (NIS in the father's manoeuvre gate): a father is replaced once, and a
+  // second new track in its gate stays a track of its own.
+  std::vector<std::pair<double, int>> order;
   for (const int t : confirmed_now_) {
     const PointTrack& track = tracks_[t];
     if (track.branch != BranchType::kFather || track.life.status != TrackStatus::kConfirmed ||
         track.doomed || !track.last_plot || track.last_plot_batch != batches_) {
       continue;
     }
+    double nis = 0.0;
+    if (lost_father_of(*track.last_plot, &nis) >= 0) order.emplace_back(nis, t);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& entry : order) {
+    const int t = entry.second;
+    const PointTrack& track = tracks_[t];
     const int f = lost_father_of(*track.last_plot);
     if (f < 0) continue;
     const std::int64_t father = tracks_[f].id, number = track.id;

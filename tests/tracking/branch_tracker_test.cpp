@@ -615,6 +615,39 @@ TEST(BranchTracker, NewTrackConfirmedInTheManoeuvreGateOfASuspendedFatherTakesIt
   EXPECT_TRUE(s.associated(1, 901));
 }
 
+TEST(BranchTracker, TwoNewTracksConfirmedInOneSuspendedFathersGateNearestTakesItsNumber) {
+  // GIVEN track 1 suspended by a miss at t = 4, and two plot chains closing on its line
+  // from either side, outside its manoeuvre gate until t = 7: tracks 2 and 3
+  config::TrackingProfile profile = branch_profile();
+  profile.track_life.delete_position_sigma = 12.0;
+  Script s(profile);
+  s.start();
+  s.scan(4, {});
+  s.scan(5, {{500.0, 1000.0}, {500.0, -1000.0}});
+  s.scan(6, {{600.0, 700.0}, {600.0, -700.0}});
+  s.scan(7, {{700.0, 400.0}, {700.0, -400.0}});
+  ASSERT_EQ(s.events("initiated"),
+            (std::vector<std::string>{"2: from plots 501 601 701", "3: from plots 502 602 702"}));
+  // WHEN both are confirmed in the same scan inside the father's manoeuvre gate, track 3's
+  // plot nearer the father's prediction (800, 0)
+  s.scan(8, {{800.0, 120.0}, {800.0, -60.0}});
+  // THEN only track 3 replaces the father, under number 1; track 2 is confirmed as itself
+  EXPECT_EQ(s.events("branch_promoted"),
+            (std::vector<std::string>{"1: son 3 of track 1 replaces track 1: track 3 confirmed "
+                                      "in its manoeuvre gate (§3.3)"}));
+  EXPECT_EQ(s.events("confirmed"), (std::vector<std::string>{"2: "}));
+  std::vector<std::int64_t> reported = s.reported();
+  std::sort(reported.begin(), reported.end());
+  ASSERT_EQ(reported, (std::vector<std::int64_t>{1, 2}));
+  EXPECT_NEAR(s.track(1)->position.y(), -60.0, 30.0);
+  EXPECT_NEAR(s.track(2)->position.y(), 120.0, 30.0);
+  // AND both go on under their numbers
+  s.scan(9, {{900.0, 280.0}, {900.0, -180.0}});
+  EXPECT_TRUE(s.associated(1, 901));
+  EXPECT_TRUE(s.associated(2, 902));
+  EXPECT_TRUE(s.events("branch_promoted").empty());
+}
+
 /// branch_profile() with a left-turn mode (0.5 rad/s) beside CV in the IMM.
 config::TrackingProfile turning_profile(bool coast_on_last_motion) {
   config::TrackingProfile p = branch_profile();

@@ -103,7 +103,7 @@ for scen in "${scenarios[@]}"; do
 done | xargs -P "$jobs" -n 2 bash -c 'one_run "$0" "$1"'
 
 python3 - "$out" "$first_seed" "$seeds" "${scenarios[@]}" <<'PY'
-import gzip, json, math, sys
+import gzip, json, math, re, sys
 
 out, first, count = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 scenarios = sys.argv[4:]
@@ -149,6 +149,16 @@ def at(frames, time):
 def pct(xs):
     return 100.0 * sum(xs) / max(len(xs), 1)
 
+def promoted(frame):
+    # {branch number: the father number it took} for the frame's branch_promoted events
+    out = {}
+    for e in frame["events"]:
+        if e["type"] == "branch_promoted":
+            m = re.match(r"\w+ (\d+) of ", e["detail"])
+            if m:
+                out[int(m.group(1))] = e["track"]
+    return out
+
 def mean(xs):
     return sum(xs) / max(len(xs), 1)
 
@@ -178,8 +188,11 @@ for scen in scenarios:
                 a, b = numbers[at(truth, 100.0)], numbers[at(truth, 150.0)]
                 # and back on its target: a plot of weight > 0.5 since then (a track that
                 # only coasted on along the target's straight line does not count)
+                # (a branch promoted in a frame took its plot under its own number, which
+                # the event's detail names: "son S of track F replaces track F: ...")
                 def took(since, until):
-                    return any(x["track"] == a and x["probability"] > 0.5
+                    return any((x["track"] == a or promoted(f).get(x["track"]) == a)
+                               and x["probability"] > 0.5
                                for f in tracks if since <= f["time"] <= until
                                for x in f["associations"])
                 survive.append(a is not None and a == b and took(135.0, 150.0))

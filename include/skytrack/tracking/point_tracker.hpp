@@ -255,7 +255,7 @@ class PointTracker {
   bool room_for_chain(std::int64_t father, double existence, std::int64_t plot_id,
                       ScanReport& report, TrackFrame& frame);
   /// The suspended father in whose manoeuvre gate `plot` lies (the nearest), or -1.
-  int lost_father_of(const PlotMeasurement& plot);
+  int lost_father_of(const PlotMeasurement& plot, double* nis = nullptr);
   /// §3.3 for chains that completed before their target's father was suspended: a father
   /// confirmed in this batch whose plot lies in a suspended father's manoeuvre gate
   /// replaces it under its number.
