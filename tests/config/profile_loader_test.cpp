@@ -392,7 +392,7 @@ TEST(ProfileLoader, CoastSonWindowAndClutterAreaLastMotionNeedTheirOptions) {
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_EQ(profile->branching.coast_son_looks, 6);
   EXPECT_DOUBLE_EQ(profile->branching.last_motion_false_plots, 0.3);
-  EXPECT_EQ(TrackingProfile{}.branching.coast_son_looks, 6);
+  EXPECT_EQ(TrackingProfile{}.branching.coast_son_looks, 8);
   EXPECT_DOUBLE_EQ(TrackingProfile{}.branching.last_motion_false_plots, 0.3);
   EXPECT_THAT(error_of("branching:\n  coast_sons: 0\n  coast_son_looks: 6\n"),
               ::testing::HasSubstr("coast_son_looks: needs coast_sons > 0"));

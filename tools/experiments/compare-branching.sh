@@ -32,7 +32,8 @@
 #   number survives  exp. 2: the number on the target at t = 100 s (just before its 3
 #                    missed scans) is the one at t = 150 s (after the re-detection at
 #                    137.5 s) and that track took a plot (association probability > 0.5)
-#                    in t = [135, 150] s; exp. 3: from t = 90 s (in the U-turn) to t = 150 s
+#                    in t = [135, 150] s (a branch's plot in the frame it replaced the
+#                    father counts); exp. 3: from t = 90 s (in the U-turn) to t = 150 s
 #   survives the area  exp. 2: that number is on the target at t = 180 s, after it left the
 #                    clutter area (at 152 s), and its track took a plot (association
 #                    probability > 0.5) in t = [155, 180] s: the number came back to the

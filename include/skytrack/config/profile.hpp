@@ -214,7 +214,7 @@ struct BranchingSpec {
   // The coast sons' decision window (0: none): a coast son that has not replaced its father
   // within this many looks of its split is pruned, the father's plots then standing (the
   // N-scan pruning of a multi-hypothesis tracker, on the miss-or-false-alarm question).
-  int coast_son_looks = 6;
+  int coast_son_looks = 8;
   // The chain by which TrackLife::support, and the branches' scores, count misses where the
   // last motion's gate expects last_motion_false_plots or more (a clutter area, where a
   // target is masked for looks on end): a run of misses there costs less than independent
