@@ -887,7 +887,11 @@ int PointTracker::lost_father_of(const PlotMeasurement& plot, double* nis) {
 void PointTracker::continue_lost_fathers(ScanReport& report, TrackFrame& frame) {
   // Nearest first (NIS in the father's manoeuvre gate): a father is replaced once, and a
   // second new track in its gate stays a track of its own.
-  std::vector<std::pair<double, int>> order;
+  struct Claim {
+    double nis;
+    int track, father;
+  };
+  std::vector<Claim> claims;
   for (const int t : confirmed_now_) {
     const PointTrack& track = tracks_[t];
     if (track.branch != BranchType::kFather || track.life.status != TrackStatus::kConfirmed ||
@@ -895,14 +899,18 @@ void PointTracker::continue_lost_fathers(ScanReport& report, TrackFrame& frame) 
       continue;
     }
     double nis = 0.0;
-    if (lost_father_of(*track.last_plot, &nis) >= 0) order.emplace_back(nis, t);
+    const int f = lost_father_of(*track.last_plot, &nis);
+    if (f >= 0) claims.push_back({nis, t, f});
   }
-  std::stable_sort(order.begin(), order.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (const auto& entry : order) {
-    const int t = entry.second;
+  std::stable_sort(claims.begin(), claims.end(),
+                   [](const Claim& a, const Claim& b) { return a.nis < b.nis; });
+  for (const Claim& claim : claims) {
+    const int t = claim.track;
     const PointTrack& track = tracks_[t];
-    const int f = lost_father_of(*track.last_plot);
+    // Its nearest father replaced by a nearer new track: the next nearest, if any.
+    const int f = tracks_[static_cast<std::size_t>(claim.father)].replaced
+                      ? lost_father_of(*track.last_plot)
+                      : claim.father;
     if (f < 0) continue;
     const std::int64_t father = tracks_[f].id, number = track.id;
     const std::string why = name(BranchType::kFather, number) + " confirmed in its manoeuvre gate";
