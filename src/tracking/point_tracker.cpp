@@ -312,28 +312,28 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
         holds_last_motion() && profile_.branching.last_motion_false_plots > 0.0;
     const std::optional<ImmEstimate> held =
         narrowed || !weighs_clutter ? narrowed : last_motion(track, predicted_[t].time, true);
+    // In a clutter area: a plot round it in dense clutter (without last_motion_false_plots
+    // every track is, from the start of the batch).
+    for (std::size_t k = 0; held && dense_[t] == 0 && k < neighbours_.size(); ++k) {
+      const int j = neighbours_[k];
+      const Innovation in = innovate(held->modes.front(), layout_, plots_[j], profile_.measurement);
+      if (in.ok && in_dense_clutter(in, j)) dense_[t] = 1;
+    }
+    if (narrowed && dense_[t] != 0) {
+      // In a clutter area its non-manoeuvre association is the motion unchanged (§2.1): it
+      // gates, weighs and is updated on its last motion alone. The IMM's turn modes spread the
+      // likelihood over the false plots (exp. 2, seeds 1-100: the number survives 52 -> 70 %)
+      // and turn the father onto them; a turn is its sons' to follow (rule 6).
+      predicted_[t] = *narrowed;
+    }
     for (const int j : neighbours_) {
       PlotHypothesis hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
       if (!hypothesis.usable) continue;
-      double nis = hypothesis.min_nis;
-      double likelihood = hypothesis.likelihood;
-      if (held) {
-        const Innovation in =
-            innovate(held->modes.front(), layout_, plots_[j], profile_.measurement);
-        const bool dense = !weighs_clutter || (in.ok && in_dense_clutter(in, j));
-        if (dense) dense_[t] = 1;
-        if (narrowed && dense) {
-          // Gated on its last motion, it weighs its plots on it too: the IMM's noisier modes
-          // spread the likelihood over the false plots of a clutter area (paper 003 exp. 2,
-          // seeds 1-100: the number survives 52 -> 70 %).
-          nis = in.ok ? in.nis : std::numeric_limits<double>::infinity();
-          likelihood = in.ok ? std::exp(in.log_likelihood) : 0.0;
-        }
-      }
       // A plot inside any mode's gate (the union of the modes' gates), or a coasting father's
       // last motion's gate (branching.coast_on_last_motion), is a candidate.
-      if (nis > gate_threshold_[plots_[j].model.size()]) continue;
+      if (hypothesis.min_nis > gate_threshold_[plots_[j].model.size()]) continue;
       gated_[j] = 1;
+      const double likelihood = hypothesis.likelihood;
       candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis), likelihood});
     }
   }
@@ -538,8 +538,11 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
       soft_update(t, candidates_, candidates, beta_plots, beta_miss, track.id, frame);
   const double detection = 1.0 - beta_miss;
   track.quality = 0.8 * track.quality + 0.2 * detection;
-  update_existence(track.life, ratios.sum, pd, profile_.association.gate_probability,
-                   profile_.track_life);
+  // P_D on its detectability chain, as in its support: a target masked in a clutter area
+  // is not evidence that there is none (IPDA with a detectability chain).
+  update_existence(track.life, ratios.sum,
+                   support_detection_probability(track.life, pd, detectability_at(t)),
+                   profile_.association.gate_probability, profile_.track_life);
   add_support(track.life, ratios, t);
   bool detected = detection > 0.5;
   if (holds_last_motion() && is_reported_as_firm(track.life.status) &&

@@ -120,6 +120,13 @@ struct Script {
     }
     return std::numeric_limits<double>::quiet_NaN();
   }
+  /// TrackLife::existence of the live track or branch numbered `id` (NaN if none).
+  double existence(std::int64_t id) const {
+    for (const PointTrack& t : tracker.tracks()) {
+      if (t.id == id && t.life.status != TrackStatus::kDeleted) return t.life.existence;
+    }
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   int live_branches() const {
     return static_cast<int>(
         std::count_if(tracker.tracks().begin(), tracker.tracks().end(), [](const PointTrack& t) {
@@ -696,17 +703,23 @@ TEST(BranchTracker, FatherThatMissedTakesPlotsOnlyOnItsLastMotion) {
   }
 }
 
+/// turning_profile(true) with M-of-N confirmation, last_motion_false_plots 0.3 and a
+/// uniform clutter density [1/m^2].
+config::TrackingProfile last_motion_where_clutter(double clutter) {
+  config::TrackingProfile p = turning_profile(true);
+  p.track_life.confirmation = config::ConfirmationMethod::kMOfN;
+  p.association.clutter_density = clutter;
+  p.branching.last_motion_false_plots = 0.3;
+  return p;
+}
+
 TEST(BranchTracker, LastMotionOnlyWhereItsGateExpectsFalsePlots) {
   // GIVEN FatherThatMissedTakesPlotsOnlyOnItsLastMotion's script with coast_on_last_motion
   // and last_motion_false_plots 0.3, in clear sky (1 false plot per 100 km^2) and in a
   // clutter area (100 per km^2, about 1 in the last motion's gate)
   for (const double clutter : {1e-8, 1e-4}) {
     SCOPED_TRACE(clutter);
-    config::TrackingProfile profile = turning_profile(true);
-    profile.track_life.confirmation = config::ConfirmationMethod::kMOfN;
-    profile.association.clutter_density = clutter;
-    profile.branching.last_motion_false_plots = 0.3;
-    Script s(profile);
+    Script s(last_motion_where_clutter(clutter));
     s.start();
     s.scan(4, {});
     s.scan(5, {{470.0, 90.0}});
@@ -720,6 +733,62 @@ TEST(BranchTracker, LastMotionOnlyWhereItsGateExpectsFalsePlots) {
     // THEN in the clutter area its last motion's gate leaves the plot out: it coasts on
     EXPECT_FALSE(s.associated(1, 501));
     EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
+  }
+}
+
+TEST(BranchTracker, FatherInAClutterAreaIsUpdatedOnItsLastMotion) {
+  // GIVEN confirmed track 1 flying straight east at 100 m/s with a left-turn mode, gating on
+  // its last motion (non_manoeuvre_gate last_motion, last_motion_false_plots 0.3), and at
+  // t = 4 a plot 35 m left of its straight line, 11 m from where its turn mode predicts
+  // (396, 24): inside its last motion's gate too
+  for (const double clutter : {1e-8, 1e-4}) {
+    SCOPED_TRACE(clutter);
+    config::TrackingProfile profile = last_motion_where_clutter(clutter);
+    profile.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kLastMotion;
+    Script s(profile);
+    s.start();
+    s.scan(4, {{396.0, 35.0}});
+    ASSERT_GT(s.probability(1, 401), 0.8);
+    if (clutter < 1e-6) {
+      // THEN in clear sky its IMM update follows the turn mode: the velocity swings north
+      // (about 16 m/s)
+      EXPECT_GT(s.track(1)->velocity.y(), 12.0);
+      continue;
+    }
+    // THEN in the clutter area the plot is taken as the motion unchanged (§2.1): it moves
+    // the father without turning it as much (about 6 m/s; 13 with the IMM update)
+    EXPECT_LT(s.track(1)->velocity.y(), 9.0);
+    EXPECT_GT(s.track(1)->position.y(), 10.0);
+  }
+}
+
+TEST(BranchTracker, FatherMissedInAClutterAreaKeepsItsExistenceOnTheDetectabilityChain) {
+  // GIVEN confirmed track 1 holding its last motion, confirmed and deleted on its IPDA
+  // existence, whose target is missed 4 scans in a row (t = 4..7)
+  for (const double hide : {0.0, 0.05}) {
+    SCOPED_TRACE(hide);
+    config::TrackingProfile profile = branch_profile();
+    profile.association.clutter_density = 1e-6;
+    profile.track_life.confirmation = config::ConfirmationMethod::kExistence;
+    profile.track_life.delete_confirmed_misses = 6;
+    profile.branching.coast_on_last_motion = true;
+    profile.branching.detectability = {.hide = hide, .reveal = 0.3};
+    Script s(profile);
+    s.start();
+    for (int t = 4; t <= 7; ++t) s.scan(t, {});
+    if (hide == 0.0) {
+      // THEN with independent misses (P_D 0.9 each scan) its existence falls below
+      // delete_existence (0.02) on the fourth: the track is gone
+      EXPECT_TRUE(s.reported().empty());
+      continue;
+    }
+    // THEN on the chain (a target can be masked for scans in a clutter area) the misses say
+    // less each time: it coasts on under number 1 and takes its target's returning plot
+    EXPECT_GT(s.existence(1), 0.2);
+    ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
+    s.scan(8, {{800.0, 0.0}});
+    EXPECT_TRUE(s.associated(1, 801));
+    EXPECT_EQ(s.track(1)->status, TrackStatus::kConfirmed);
   }
 }
 

@@ -23,7 +23,9 @@
 #                   (100 seeds of the three scenarios: 1.2 GB plain, a third of it gzipped);
 #                   zcat to read them
 # Columns, per target and run (mean over the seeds), from the scan its first firm
-# (confirmed or coasting) track is within 2000 m of it (the track "on" it is the nearest):
+# (confirmed or coasting) track is within 2000 m of it (the track "on" it: the one on it in
+# the previous scan while that is still firm and within 2000 m, else the nearest; the
+# correspondence rule of the CLEAR MOT metrics, Bernardin & Stiefelhagen 2008):
 #   number changes   the number on the target changes (a re-initiation is one of them: the
 #                    new number is a new track); "without number change" = % of targets,
 #                    and % of runs in which no target's number changed
@@ -116,8 +118,10 @@ def lines(path):
     with gzip.open(path + ".gz", "rt") as f:
         return [json.loads(l) for l in f]
 
-def on_target(truth_frame, track_frame, target):
-    """Number of the nearest firm track within GATE of the target, or None."""
+def on_target(truth_frame, track_frame, target, previous):
+    """Number of the firm track on the target, or None: the previous frame's number while
+    its track is firm and within GATE (CLEAR MOT's correspondence rule: a track passing
+    nearer does not take the target), else the nearest firm track within GATE."""
     obj = next((o for o in truth_frame["objects"] if o["id"] == target), None)
     if obj is None:
         return None
@@ -126,13 +130,17 @@ def on_target(truth_frame, track_frame, target):
         if t["status"] not in FIRM:
             continue
         d = math.dist(obj["position"], t["position"])
+        if d <= GATE and t["id"] == previous:
+            return previous
         if d <= GATE and (best is None or d < best[0]):
             best = (d, t["id"])
     return best and best[1]
 
 def continuity(truth, tracks, target):
     """After the target's first firm track: number changes, and scans without a firm track."""
-    numbers = [on_target(a, b, target) for a, b in zip(truth, tracks)]
+    numbers = []
+    for a, b in zip(truth, tracks):
+        numbers.append(on_target(a, b, target, numbers[-1] if numbers else None))
     changes, gaps, current = 0, 0, None
     for n in numbers:
         if n is None:
