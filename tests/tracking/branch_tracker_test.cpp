@@ -42,6 +42,13 @@ config::TrackingProfile branch_profile() {
   return p;
 }
 
+/// branch_profile() with a position-spread limit (12 m) that one missed scan exceeds.
+config::TrackingProfile suspending_profile() {
+  config::TrackingProfile p = branch_profile();
+  p.track_life.delete_position_sigma = 12.0;
+  return p;
+}
+
 struct Script {
   explicit Script(const config::TrackingProfile& profile)
       : tracker(*PointTracker::create(profile, 2)) {}
@@ -103,6 +110,11 @@ struct Script {
       if (a.track == track && a.plot == plot) return a.probability;
     }
     return 0.0;
+  }
+  /// Track 1 (start()) misses at t = 4 and is suspended (with suspending_profile()).
+  void suspend_father() {
+    start();
+    scan(4, {});
   }
   /// Track 1 (start()) in a clutter area misses at t = 4 and 5, and at t = 6 takes a false
   /// plot 60 m left of its line, which splits coast son 2 (with coast_son_profile()).
@@ -340,9 +352,7 @@ TEST(BranchTracker, BranchWithoutPlotsIsPrunedByItsTrackLife) {
 
 TEST(BranchTracker, FatherDeletedByItsLifeWaitsUnreportedForItsSon) {
   // GIVEN a position-spread limit that one missed scan exceeds
-  config::TrackingProfile profile = branch_profile();
-  profile.track_life.delete_position_sigma = 12.0;
-  Script s(profile);
+  Script s(suspending_profile());
   s.start();
   // WHEN track 1 misses its plot and a plot lies in its manoeuvre gate
   s.scan(4, {{400.0, 150.0}});
@@ -512,11 +522,9 @@ TEST(BranchTracker, UndecidedFatherWhoseSonsAreGoneTakesPlotsAgain) {
 }
 
 TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
-  config::TrackingProfile profile = branch_profile();
-  profile.track_life.delete_position_sigma = 12.0;
+  const config::TrackingProfile profile = suspending_profile();
   Script s(profile);
-  s.start();
-  s.scan(4, {});  // suspended, no plot to branch from
+  s.suspend_father();  // suspended, no plot to branch from
   EXPECT_EQ(s.events("suspended").size(), 1u);
   EXPECT_TRUE(s.reported().empty());
   // THEN its branching ends when its misses reach delete_confirmed_misses, and it is deleted
@@ -536,11 +544,8 @@ TEST(BranchTracker, PlotChainInTheManoeuvreGateOfASuspendedFatherContinuesIt) {
   // GIVEN track 1 suspended by a miss at t = 4 (spread limit 12 m); its target comes back
   // towards its line at 300 m/s from 1000 m and 700 m off at t = 5 and 6, outside the
   // father's manoeuvre gate, so those plots start no son
-  config::TrackingProfile profile = branch_profile();
-  profile.track_life.delete_position_sigma = 12.0;
-  Script s(profile);
-  s.start();
-  s.scan(4, {});
+  Script s(suspending_profile());
+  s.suspend_father();
   ASSERT_EQ(s.events("suspended").size(), 1u);
   s.scan(5, {{500.0, 1000.0}});
   s.scan(6, {{600.0, 700.0}});
@@ -568,11 +573,8 @@ TEST(BranchTracker, PlotChainInTheManoeuvreGateOfASuspendedFatherContinuesIt) {
 
 TEST(BranchTracker, ChainOutsideTheManoeuvreGateOfASuspendedFatherIsANewTrack) {
   // GIVEN the same script, the chain's third plot 1000 m off the father's prediction
-  config::TrackingProfile profile = branch_profile();
-  profile.track_life.delete_position_sigma = 12.0;
-  Script s(profile);
-  s.start();
-  s.scan(4, {});
+  Script s(suspending_profile());
+  s.suspend_father();
   s.scan(5, {{500.0, 1000.0}});
   s.scan(6, {{600.0, 1000.0}});
   s.scan(7, {});
@@ -592,11 +594,8 @@ TEST(BranchTracker, NewTrackConfirmedInTheManoeuvreGateOfASuspendedFatherTakesIt
   // GIVEN track 1 suspended by a miss at t = 4 (spread limit 12 m), and its target coming
   // back towards its line at 300 m/s: the plot chain of t = 5, 6, 7 ends 400 m off the
   // father's prediction, outside its manoeuvre gate, so it starts track 2
-  config::TrackingProfile profile = branch_profile();
-  profile.track_life.delete_position_sigma = 12.0;
-  Script s(profile);
-  s.start();
-  s.scan(4, {});
+  Script s(suspending_profile());
+  s.suspend_father();
   s.scan(5, {{500.0, 1000.0}});
   s.scan(6, {{600.0, 700.0}});
   s.scan(7, {{700.0, 400.0}});
@@ -625,11 +624,8 @@ TEST(BranchTracker, NewTrackConfirmedInTheManoeuvreGateOfASuspendedFatherTakesIt
 TEST(BranchTracker, TwoNewTracksConfirmedInOneSuspendedFathersGateNearestTakesItsNumber) {
   // GIVEN track 1 suspended by a miss at t = 4, and two plot chains closing on its line
   // from either side, outside its manoeuvre gate until t = 7: tracks 2 and 3
-  config::TrackingProfile profile = branch_profile();
-  profile.track_life.delete_position_sigma = 12.0;
-  Script s(profile);
-  s.start();
-  s.scan(4, {});
+  Script s(suspending_profile());
+  s.suspend_father();
   s.scan(5, {{500.0, 1000.0}, {500.0, -1000.0}});
   s.scan(6, {{600.0, 700.0}, {600.0, -700.0}});
   s.scan(7, {{700.0, 400.0}, {700.0, -400.0}});
