@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sequence_helpers.hpp"
+#include "skytrack/core/transponder.hpp"
 
 namespace skytrack::dds {
 namespace {
@@ -102,6 +103,63 @@ Plot decode_plot(std::int64_t id, std::uint32_t flags, const double* v) {
   return plot;
 }
 
+/// The transponder attributes as parallel sequences, each left empty when no plot has it.
+Expected<void> put_transponder(const std::vector<Plot>& plots, skytrack_dds_PlotBatch& b) {
+  const std::size_t n = plots.size();
+  const auto any = [&](auto member) {
+    return std::any_of(plots.begin(), plots.end(),
+                       [&](const Plot& p) { return (p.*member).has_value(); });
+  };
+  const std::size_t n3a = any(&Plot::mode3a) ? n : 0, ns = any(&Plot::mode_s) ? n : 0,
+                    nfl = any(&Plot::flight_level) ? n : 0;
+  if (!reserve_primitive(b.plot_mode3a, n3a) || !reserve_primitive(b.plot_mode_s, ns) ||
+      !reserve_primitive(b.plot_flight_level, nfl)) {
+    return unexpected(out_of_memory("PlotBatch.plot_mode3a"));
+  }
+  for (std::size_t i = 0; i < n3a; ++i)
+    b.plot_mode3a._buffer[i] = plots[i].mode3a ? *plots[i].mode3a : -1;
+  for (std::size_t i = 0; i < ns; ++i) {
+    b.plot_mode_s._buffer[i] = plots[i].mode_s ? static_cast<std::int32_t>(*plots[i].mode_s) : -1;
+  }
+  for (std::size_t i = 0; i < nfl; ++i)
+    b.plot_flight_level._buffer[i] = plots[i].flight_level.value_or(kNaN);
+  return {};
+}
+
+/// Reads the transponder sequences back; a sequence of the wrong length or a value out of
+/// range is an error naming the field.
+Expected<void> get_transponder(const skytrack_dds_PlotBatch& b, std::vector<Plot>& plots) {
+  const std::size_t n = plots.size();
+  const auto length_ok = [n](std::uint32_t length) { return length == 0 || length == n; };
+  if (!length_ok(b.plot_mode3a._length) || !length_ok(b.plot_mode_s._length) ||
+      !length_ok(b.plot_flight_level._length)) {
+    return make_error("PlotBatch transponder sequences: length neither 0 nor " + std::to_string(n));
+  }
+  if (auto e = missing_buffer(b.plot_mode3a, "PlotBatch.plot_mode3a")) return unexpected(*e);
+  if (auto e = missing_buffer(b.plot_mode_s, "PlotBatch.plot_mode_s")) return unexpected(*e);
+  if (auto e = missing_buffer(b.plot_flight_level, "PlotBatch.plot_flight_level")) {
+    return unexpected(*e);
+  }
+  for (std::size_t i = 0; i < b.plot_mode3a._length; ++i) {
+    const std::int32_t v = b.plot_mode3a._buffer[i];
+    if (v < -1 || v > kMaxMode3a)
+      return make_error("PlotBatch.plot_mode3a[" + std::to_string(i) + "]: out of range");
+    if (v >= 0) plots[i].mode3a = static_cast<std::uint16_t>(v);
+  }
+  for (std::size_t i = 0; i < b.plot_mode_s._length; ++i) {
+    const std::int32_t v = b.plot_mode_s._buffer[i];
+    if (v < -1 || v > static_cast<std::int32_t>(kMaxModeS)) {
+      return make_error("PlotBatch.plot_mode_s[" + std::to_string(i) + "]: out of range");
+    }
+    if (v >= 0) plots[i].mode_s = static_cast<std::uint32_t>(v);
+  }
+  for (std::size_t i = 0; i < b.plot_flight_level._length; ++i) {
+    const double v = b.plot_flight_level._buffer[i];
+    if (!std::isnan(v)) plots[i].flight_level = v;
+  }
+  return {};
+}
+
 }  // namespace
 
 // ---- PlotScan <-> PlotBatch -----------------------------------------------------------------
@@ -132,7 +190,7 @@ Expected<void> to_dds(const PlotScan& scan, PlotBatchSample& out) {
     b.plot_ids._buffer[i] = scan.plots[i].id;
     b.plot_flags._buffer[i] = encode_plot(scan.plots[i], values);
   }
-  return {};
+  return put_transponder(scan.plots, b);
 }
 
 Expected<PlotBatchSample> to_dds(const PlotScan& scan) {
@@ -171,7 +229,7 @@ Expected<void> from_dds(const skytrack_dds_PlotBatch& batch, PlotScan& out) {
     out.plots.push_back(
         decode_plot(batch.plot_ids._buffer[i], batch.plot_flags._buffer[i], values));
   }
-  return {};
+  return get_transponder(batch, out.plots);
 }
 
 Expected<PlotScan> from_dds(const skytrack_dds_PlotBatch& batch) {

@@ -8,6 +8,8 @@
 
 #include <fmt/format.h>
 
+#include "skytrack/core/transponder.hpp"
+
 namespace skytrack::io {
 namespace {
 
@@ -121,6 +123,15 @@ void put_plot(Buffer& out, const Plot& plot) {
   put_optional(out, "snr_db", plot.snr_db, first);
   put_optional(out, "amplitude", plot.amplitude, first);
   put_sigma(out, "sigma", plot.sigma, first);
+  if (plot.mode3a) {
+    put_key(out, "mode3a", first);
+    put_string(out, format_mode3a(*plot.mode3a));
+  }
+  if (plot.mode_s) {
+    put_key(out, "mode_s", first);
+    put_string(out, format_mode_s(*plot.mode_s));
+  }
+  put_optional(out, "flight_level", plot.flight_level, first);
   out.push_back('}');
 }
 

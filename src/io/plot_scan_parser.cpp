@@ -6,6 +6,7 @@
 
 #include "json_fields.hpp"
 #include "json_parser.hpp"
+#include "skytrack/core/transponder.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
 
 namespace skytrack::io {
@@ -64,6 +65,31 @@ Expected<PlatformState> parse_platform(const element& value) {
   return platform;
 }
 
+/// The optional transponder attributes: mode3a (4 octal digits), mode_s (6 hex digits),
+/// flight_level (a number of flight levels a transponder can report).
+Expected<void> parse_transponder(const simdjson::dom::object& obj, const std::string& path,
+                                 Plot& plot) {
+  auto mode3a = optional_field<std::string_view>(obj, path, "mode3a", as_string);
+  if (!mode3a) return unexpected(mode3a.error());
+  if (*mode3a) {
+    plot.mode3a = parse_mode3a(**mode3a);
+    if (!plot.mode3a) return make_error(join(path, "mode3a") + ": expected 4 octal digits");
+  }
+  auto mode_s = optional_field<std::string_view>(obj, path, "mode_s", as_string);
+  if (!mode_s) return unexpected(mode_s.error());
+  if (*mode_s) {
+    plot.mode_s = parse_mode_s(**mode_s);
+    if (!plot.mode_s) return make_error(join(path, "mode_s") + ": expected 6 hex digits");
+  }
+  auto level = optional_field<double>(obj, path, "flight_level", as_finite);
+  if (!level) return unexpected(level.error());
+  if (*level && !plausible_flight_level(**level)) {
+    return make_error(join(path, "flight_level") + ": outside -15 to 1500");
+  }
+  plot.flight_level = *level;
+  return {};
+}
+
 Expected<Plot> parse_plot(const element& value, const std::string& path) {
   auto obj = as_object(value, path);
   if (!obj) return unexpected(obj.error());
@@ -113,6 +139,7 @@ Expected<Plot> parse_plot(const element& value, const std::string& path) {
   if (!amplitude) return unexpected(amplitude.error());
   plot.snr_db = *snr;
   plot.amplitude = *amplitude;
+  if (auto ok = parse_transponder(*obj, path, plot); !ok) return unexpected(ok.error());
   if (const auto sigma = field(*obj, "sigma")) {
     auto parsed = parse_sigma(*sigma, join(path, "sigma"));
     if (!parsed) return unexpected(parsed.error());

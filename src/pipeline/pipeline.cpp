@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "skytrack/core/transponder.hpp"
+
 namespace skytrack {
 namespace {
 
@@ -15,6 +17,9 @@ bool finite(const std::optional<double>& v) {
 std::optional<std::string> invalid_plot_reason(const Plot& plot) {
   if (!finite(plot.time) || !finite(plot.snr_db) || !finite(plot.amplitude)) {
     return "non-finite time or strength";
+  }
+  if (plot.flight_level && !plausible_flight_level(*plot.flight_level)) {
+    return "flight level not finite or outside -15 to 1500";
   }
   const MeasurementSigma& s = plot.sigma;
   for (const auto* v : {&s.range, &s.azimuth, &s.elevation, &s.range_rate, &s.x, &s.y, &s.z}) {

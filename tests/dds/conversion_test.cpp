@@ -86,6 +86,39 @@ TEST(PlotBatchConversion, PolarPlotsRoundTripWithAndWithoutOptionalValues) {
   EXPECT_EQ(round_trip(scan), scan);  // THEN the round trip is exact
 }
 
+TEST(PlotBatchConversion, TransponderAttributesRoundTripWhereSomePlotsCarryThem) {
+  // GIVEN secondary-radar plots: one with every attribute, one with a code only, one bare
+  Plot full = polar_plot(0, false), code_only = polar_plot(1, false);
+  full.mode3a = 02270;
+  full.mode_s = 0xFFFFFF;
+  full.flight_level = 221.0;
+  code_only.mode3a = 0;
+  const PlotScan scan = scan_with({full, code_only, polar_plot(2, false)});
+  EXPECT_EQ(round_trip(scan), scan);  // THEN the round trip is exact
+  // AND a batch without them sends empty sequences
+  auto bare = to_dds(scan_with({polar_plot(0, false)}));
+  ASSERT_TRUE(bare);
+  EXPECT_EQ(bare->get().plot_mode3a._length, 0u);
+  EXPECT_EQ(bare->get().plot_flight_level._length, 0u);
+}
+
+TEST(PlotBatchConversion, TransponderSequencesOfTheWrongLengthOrRangeAreErrors) {
+  Plot plot = polar_plot(0, false);
+  plot.mode3a = 01234;
+  auto sample = to_dds(scan_with({plot, polar_plot(1, false)}));
+  ASSERT_TRUE(sample);
+  skytrack_dds_PlotBatch& b = sample->get();
+  b.plot_mode3a._buffer[1] = 010000;  // 13 bits
+  auto range = from_dds(b);
+  ASSERT_FALSE(range);
+  EXPECT_THAT(range.error().message, HasSubstr("plot_mode3a[1]: out of range"));
+  b.plot_mode3a._buffer[1] = -1;
+  b.plot_mode3a._length = 1;
+  auto length = from_dds(b);
+  ASSERT_FALSE(length);
+  EXPECT_THAT(length.error().message, HasSubstr("transponder"));
+}
+
 TEST(PlotBatchConversion, CartesianPlotsRoundTripWithAndWithoutZ) {
   Plot with_sigma = cartesian_plot(3, 120.0);
   with_sigma.sigma.x = 2.5;

@@ -74,6 +74,33 @@ TEST(PlotScanParser, DropsBadPlotsAndKeepsTheRest) {
   EXPECT_THAT(parsed->rejected_plots[5], HasSubstr("plots[6].azimuth: missing"));
 }
 
+TEST(PlotScanParser, ReadsTransponderAttributesAndDropsPlotsWithBadOnes) {
+  // GIVEN secondary-radar plots with a Mode 3/A code, a Mode S address and a flight level
+  const auto parsed = parse_plot_scan(
+      R"({"sensor":0,"scan":1,"time":1.0,"plots":[
+          {"id":0,"range":100,"azimuth":0.5,"mode3a":"2270","mode_s":"4ca2D7","flight_level":221},
+          {"id":1,"range":100,"azimuth":0.6},
+          {"id":2,"range":100,"azimuth":0.7,"mode3a":"2290"},
+          {"id":3,"range":100,"azimuth":0.8,"mode_s":"4CA2D"},
+          {"id":4,"range":100,"azimuth":0.9,"flight_level":4000},
+          {"id":5,"range":100,"azimuth":1.0,"mode3a":2270}]})");
+  ASSERT_TRUE(parsed) << parsed.error().message;
+  // THEN the attributes are read as numbers, and absent where not given
+  ASSERT_EQ(parsed->scan.plots.size(), 2u);
+  const Plot& plot = parsed->scan.plots[0];
+  EXPECT_EQ(plot.mode3a, 02270);
+  EXPECT_EQ(plot.mode_s, 0x4CA2D7u);
+  EXPECT_EQ(plot.flight_level, 221.0);
+  EXPECT_FALSE(parsed->scan.plots[1].mode3a || parsed->scan.plots[1].mode_s ||
+               parsed->scan.plots[1].flight_level);
+  // AND a malformed attribute drops its plot with a reason naming the field
+  ASSERT_EQ(parsed->rejected_plots.size(), 4u);
+  EXPECT_THAT(parsed->rejected_plots[0], HasSubstr("plots[2].mode3a: expected 4 octal digits"));
+  EXPECT_THAT(parsed->rejected_plots[1], HasSubstr("plots[3].mode_s: expected 6 hex digits"));
+  EXPECT_THAT(parsed->rejected_plots[2], HasSubstr("plots[4].flight_level: outside"));
+  EXPECT_THAT(parsed->rejected_plots[3], HasSubstr("plots[5].mode3a: expected a string"));
+}
+
 TEST(PlotScanParser, RejectsLinesWithBadStructure) {
   const struct {
     const char* line;
@@ -118,6 +145,9 @@ TEST(PlotScanWriter, RoundTripsBitExactly) {
   polar.range_rate = -180.2;
   polar.time = 17.123456789012345;
   polar.snr_db = 13.0;
+  polar.mode3a = 07777;
+  polar.mode_s = 0x00ABCD;
+  polar.flight_level = -12.5;
   polar.sigma.range = 20.0;
   Plot cartesian;
   cartesian.id = 9;

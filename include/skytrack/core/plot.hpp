@@ -41,6 +41,10 @@ struct Plot {
   std::optional<double> snr_db;
   std::optional<double> amplitude;
   MeasurementSigma sigma;  // per-plot override
+  // Secondary-radar (transponder) attributes, where the reply carried them.
+  std::optional<std::uint16_t> mode3a;  // Mode 3/A code, 12 bits (4 octal digits)
+  std::optional<std::uint32_t> mode_s;  // Mode S aircraft address, 24 bits
+  std::optional<double> flight_level;   // Mode C / S pressure altitude [100 ft]
 
   bool operator==(const Plot&) const = default;
 };
