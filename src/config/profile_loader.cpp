@@ -170,6 +170,25 @@ void read_clutter_density(YamlSection& s, std::optional<double>& out) {
   out = value;
 }
 
+AntennaSpec read_antenna(YamlSection s) {
+  AntennaSpec a;
+  read_enum(s, "rotation", a.rotation,
+            {AntennaRotation::kAuto, AntennaRotation::kRotating, AntennaRotation::kSnapshot});
+  const std::string key = "period";
+  if (s.has(key) && s.node()[key].IsScalar() && s.node()[key].Scalar() == "auto") {
+    std::string ignored;
+    s.text(key, ignored);
+  } else {
+    // 0.1 s (a fast surface-movement radar spins about 1 s) to 10 min (a slow search sweep).
+    s.number(key, a.period, Range{0.1, 600.0});
+  }
+  read_enum(s, "direction", a.direction,
+            {RotationDirection::kAuto, RotationDirection::kClockwise,
+             RotationDirection::kCounterclockwise});
+  s.finish();
+  return a;
+}
+
 AssociationSpec read_association(YamlSection s) {
   AssociationSpec a;
   read_enum(s, "method", a.method, {AssociationMethod::kJpda, AssociationMethod::kGnn});
@@ -392,6 +411,7 @@ TrackingProfile read_profile(const YAML::Node& node, ErrorList& errors) {
     root.integer("dimension", p.dimension, Range{2.0, 3.0});
   }
   p.measurement = read_measurement(root.section("measurement"));
+  p.antenna = read_antenna(root.section("antenna"));
   read_motion_models(root, p.motion_models);
 
   std::size_t before = errors.messages().size();

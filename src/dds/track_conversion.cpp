@@ -222,6 +222,14 @@ Expected<TrackBatchSample> to_dds(const TrackFrame& frame) {
     const Association& a = frame.associations[i];
     b.associations._buffer[i] = {a.track, a.plot, a.probability};
   }
+  const bool held_over = std::any_of(frame.associations.begin(), frame.associations.end(),
+                                     [](const Association& a) { return a.scan.has_value(); });
+  if (!reserve_primitive(b.association_scans, held_over ? frame.associations.size() : 0)) {
+    return unexpected(out_of_memory("TrackBatch.association_scans"));
+  }
+  for (std::uint32_t i = 0; i < b.association_scans._length; ++i) {
+    b.association_scans._buffer[i] = frame.associations[i].scan.value_or(frame.scan);
+  }
   if (!alloc_zeroed(b.events, frame.events.size()))
     return unexpected(out_of_memory("TrackBatch.events"));
   for (std::size_t i = 0; i < frame.events.size(); ++i) {
@@ -244,6 +252,15 @@ Expected<TrackFrame> from_dds(const skytrack_dds_TrackBatch& batch) {
     return unexpected(*e);
   }
   if (auto e = missing_buffer(batch.events, "TrackBatch.events")) return unexpected(*e);
+  if (auto e = missing_buffer(batch.association_scans, "TrackBatch.association_scans")) {
+    return unexpected(*e);
+  }
+  if (batch.association_scans._length != 0 &&
+      batch.association_scans._length != batch.associations._length) {
+    return make_error("TrackBatch.association_scans: length " +
+                      std::to_string(batch.association_scans._length) + ", expected 0 or " +
+                      std::to_string(batch.associations._length) + " (associations length)");
+  }
   TrackFrame frame;
   frame.sensor = batch.sensor;
   frame.scan = batch.scan;
@@ -258,7 +275,10 @@ Expected<TrackFrame> from_dds(const skytrack_dds_TrackBatch& batch) {
   frame.associations.reserve(batch.associations._length);
   for (std::uint32_t i = 0; i < batch.associations._length; ++i) {
     const skytrack_dds_Association& a = batch.associations._buffer[i];
-    frame.associations.push_back({a.track, a.plot, a.probability});
+    frame.associations.push_back({a.track, a.plot, a.probability, std::nullopt});
+    if (i < batch.association_scans._length && batch.association_scans._buffer[i] != batch.scan) {
+      frame.associations.back().scan = batch.association_scans._buffer[i];
+    }
   }
   frame.events.reserve(batch.events._length);
   for (std::uint32_t i = 0; i < batch.events._length; ++i) {

@@ -279,6 +279,7 @@ std::string to_json(const TrackFrame& frame) {
     fmt::format_to(std::back_inserter(b), "{{\"track\":{},\"plot\":{},\"probability\":", a.track,
                    a.plot);
     put_number(b, a.probability);
+    if (a.scan) fmt::format_to(std::back_inserter(b), ",\"scan\":{}", *a.scan);
     b.push_back('}');
   };
   put_list(out, "associations", frame.associations, put_association, first);

@@ -115,7 +115,12 @@ Expected<Association> parse_association(const element& value, const std::string&
   if (*probability < 0.0 || *probability > 1.0) {
     return make_error(join(path, "probability") + ": not in [0, 1]");
   }
-  return Association{*track, *plot, *probability};
+  auto scan = optional_field<std::int64_t>(*obj, path, "scan", as_integer);
+  if (!scan) return unexpected(scan.error());
+  if (*scan && **scan < 0) return make_error(join(path, "scan") + ": negative");
+  Association out{*track, *plot, *probability, std::nullopt};
+  if (*scan) out.scan = static_cast<std::uint64_t>(**scan);
+  return out;
 }
 
 Expected<TrackEvent> parse_event(const element& value, const std::string& path) {

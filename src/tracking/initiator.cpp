@@ -58,6 +58,15 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
   return completed_;
 }
 
+void Initiator::search_regions(double time, std::vector<SearchRegion>& out) const {
+  for (const Chain& chain : chains_) {
+    const double dt = std::max(0.0, time - chain.time);
+    out.push_back(
+        {chain.position + chain.velocity * dt,
+         4.0 * (2.0 * position_sigma(chain.plots.back())) + 0.5 * kMaxAcceleration * dt * dt});
+  }
+}
+
 void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasurement>& plots) {
   if (plots.empty()) return;
   // Plots of one batch may span a whole revolution: search around the chain's prediction at

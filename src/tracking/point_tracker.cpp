@@ -8,13 +8,13 @@
 #include <Eigen/Eigenvalues>
 
 #include "point_tracker_support.hpp"
-#include "skytrack/clutter/clutter_map.hpp"
 #include "skytrack/core/chi_square.hpp"
 #include "skytrack/geometry/frames.hpp"
 
 namespace skytrack {
 namespace {
 
+using tracking_detail::add_association;
 using tracking_detail::add_event;
 using tracking_detail::mode_spread;
 using tracking_detail::position_of;
@@ -40,11 +40,15 @@ constexpr std::int64_t kManoeuvreExactStates = std::int64_t{1} << 12;
 constexpr double kUnknownHeightSigma = 3000.0;
 // Acceleration spread of a new track, where the layout has acceleration states [m/s^2].
 constexpr double kInitialAccelerationSigma = 10.0;
-// Below this many plots of one form a batch says nothing about its clutter density.
-constexpr int kMinPlotsForDensity = 10;
 // Sparse clutter when nothing better is known: one false plot per (10 km)^k.
 double sparse_clutter_density(int position_dims) {
   return std::pow(1e-4, position_dims);
+}
+
+std::optional<clutter::ClutterMapCells> clutter_map_cells(const config::ClutterMapSpec& map) {
+  if (!map.enabled) return std::nullopt;
+  return clutter::ClutterMapCells{
+      .range = map.range_cell, .azimuth = map.azimuth_cell, .cartesian = map.cartesian_cell};
 }
 
 /// True when the plot measures height (elevation or z).
@@ -132,6 +136,7 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout l
       hold_(std::move(hold)),
       initiator_(profile.initiation, layout.dims),
       clutter_(profile.clutter_rejection),
+      density_(clutter_map_cells(profile.association.clutter_map)),
       jpda_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
                         .k_best = profile.association.k_best}),
       jpda_manoeuvre_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
@@ -143,23 +148,34 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout l
     gate_volume_per_peak_[d] = std::pow(0.5 * gate_threshold_[d], half) / std::tgamma(half + 1.0);
     manoeuvre_threshold_[d] = chi_square_quantile(profile.branching.manoeuvre_gate_probability, d);
   }
+  // What a track may do between looks, for its search region (search_regions): three sigma
+  // of its models' white acceleration, or its fastest turn.
+  for (const config::MotionModelSpec& m : profile.motion_models) {
+    region_accel_ = std::max(region_accel_, 3.0 * m.accel_sigma);
+    max_turn_rate_ = std::max(max_turn_rate_, std::abs(m.turn_rate));
+  }
   if (manoeuvre_) {
     const int n = manoeuvre_->mode_count();
     manoeuvre_start_ = Eigen::VectorXd::Constant(n, 1.0 / n);
   }
 }
 
-void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& report) {
+void PointTracker::start_frame(const PlotScan& scan, TrackFrame& frame) const {
   frame.sensor = scan.sensor;
   frame.scan = scan.scan;
   frame.time = scan.time;
   frame.tracks.clear();
   frame.associations.clear();
   frame.events.clear();
+}
+
+void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& report,
+                           const LookSources* sources) {
+  start_frame(scan, frame);
   ++batches_;
 
   auto start = Clock::now();
-  make_measurements(scan, report);
+  make_measurements(scan, sources, report);
   double t_min = scan.time, t_max = scan.time;
   for (const PlotMeasurement& p : plots_) {
     t_min = std::min(t_min, p.time);
@@ -181,20 +197,82 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
   initiate(scan, report, frame);
   if (branching()) retire_doomed_fathers(frame);
   report_tracks(scan.time, report, frame);
+  if (windowed_) density_.remember(sensor_, plots_, rejected_, clutter_counted_);
   report.manage = since(start);
 }
 
-void PointTracker::make_measurements(const PlotScan& scan, ScanReport& report) {
+void PointTracker::report_only(const PlotScan& scan, TrackFrame& frame, ScanReport& report) {
+  start_frame(scan, frame);
+  report.plots = static_cast<int>(scan.plots.size());
+  report_tracks(scan.time, report, frame);
+}
+
+SearchRegion PointTracker::region_bound(int t, const PlotScan& header, double time,
+                                        double threshold, double accel) const {
+  // The combined estimate at its own time, kept until the track changes, extrapolated with a
+  // bound on its growth rather than an IMM prediction (a feed of a few plots per batch asks
+  // for regions thousands of times a revolution): position and velocity spread, and what a
+  // turn or an acceleration of `accel` does meanwhile.
+  const PointTrack& track = tracks_[static_cast<std::size_t>(t)];
+  const int dims = layout_.dims;
+  if (region_seeds_.size() < tracks_.size()) region_seeds_.resize(tracks_.size());
+  RegionSeed& seed = region_seeds_[static_cast<std::size_t>(t)];
+  if (seed.id != track.id || seed.time != track.estimate.time) {
+    const Gaussian g = filter_.combine(track.estimate);
+    Gaussian velocity = g;
+    for (int a = 0; a < dims; ++a) {
+      for (int b = 0; b < dims; ++b) {
+        velocity.covariance(2 * a, 2 * b) = g.covariance(2 * a + 1, 2 * b + 1);
+      }
+    }
+    seed = {track.id,
+            track.estimate.time,
+            position_of(g.mean, dims),
+            velocity_of(g.mean, dims),
+            position_spread(g, dims),
+            position_spread(velocity, dims)};
+  }
+  const double dt = std::abs(time - seed.time);
+  const Eigen::Vector3d centre = seed.position + seed.velocity * (time - seed.time);
+  const double track_sigma = seed.spread + seed.velocity_spread * dt;
+  const double plot_sigma = plot_spread_at(centre, header);
+  const double manoeuvre = 0.5 * std::max(accel, max_turn_rate_ * seed.velocity.norm()) * dt * dt;
+  return {centre,
+          std::sqrt(threshold * (track_sigma * track_sigma + plot_sigma * plot_sigma)) + manoeuvre};
+}
+
+void PointTracker::search_regions(const PlotScan& header, double time,
+                                  std::vector<SearchRegion>& out) const {
+  out.clear();
+  for (std::size_t t = 0; t < tracks_.size(); ++t) {
+    if (tracks_[t].life.status == TrackStatus::kDeleted) continue;
+    out.push_back(region_bound(static_cast<int>(t), header, time,
+                               gate_threshold_[kMaxMeasurementDim], region_accel_));
+  }
+  initiator_.search_regions(time, out);
+}
+
+void PointTracker::make_measurements(const PlotScan& scan, const LookSources* sources,
+                                     ScanReport& report) {
   plots_.clear();
   positions_.clear();
   report.plots = static_cast<int>(scan.plots.size());
-  for (const Plot& plot : scan.plots) {
-    auto measurement =
-        measurement_from_plot(plot, scan, profile_.measurement.default_sigma, layout_.dims);
+  sensor_ = scan.sensor;
+  windowed_ = sources != nullptr && !profile_.association.clutter_density;
+  clutter_counted_.assign(scan.plots.size(), 0);
+  // A snapshot look is one revolution's worth of sweep after the last.
+  const double snapshot_sweep = 2.0 * std::numbers::pi * static_cast<double>(batches_);
+  for (std::size_t i = 0; i < scan.plots.size(); ++i) {
+    const int from = sources != nullptr ? sources->batch_of[i] : -1;
+    const PlotScan& header = from >= 0 ? sources->batches[static_cast<std::size_t>(from)] : scan;
+    auto measurement = measurement_from_plot(scan.plots[i], header,
+                                             profile_.measurement.default_sigma, layout_.dims);
     if (!measurement) {
       ++report.plots_invalid;
       continue;
     }
+    measurement->scan = header.scan;
+    measurement->sweep = sources != nullptr ? sources->sweep[i] : snapshot_sweep;
     positions_.push_back(approximate_position(*measurement));
     plots_.push_back(std::move(*measurement));
   }
@@ -256,9 +334,7 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
         // A father holding its last motion since a miss: its manoeuvre gate and sons start
         // from its last update (rule 6), coasted by its IMM, whose turn modes reach where a
         // turn since then has gone.
-        const bool held = holds_last_motion() && track.branch == BranchType::kFather &&
-                          track.life.consecutive_misses >= 1 && track.last_detected;
-        previous_[t] = held && track.coasted ? *track.coasted : track.estimate;
+        previous_[t] = starts_from_coast(track) ? *track.coasted : track.estimate;
         has_previous_[t] = 1;
       }
     }
@@ -276,6 +352,18 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
       track.undecided = false;
     }
     const ImmEstimate& estimate = track.estimate;
+    if (scan.coverage) {
+      // A sector look: most tracks lie far from it; a bound on the search region says which
+      // need no prediction.
+      SearchRegion bound = region_bound(static_cast<int>(t), scan,
+                                        std::max(batch_mid, estimate.time), widest, region_accel_);
+      bound.radius += seed_speed(static_cast<int>(t)) * half_span;
+      if (!covers_region(scan, bound.centre, bound.radius)) {
+        covered_[t] = 0;
+        predicted_[t] = estimate;
+        continue;
+      }
+    }
     const Gaussian mid =
         filter_.combine(filter_.predict(estimate, std::max(batch_mid, estimate.time)));
     const Eigen::Vector3d centre = position_of(mid.mean, layout_.dims);
@@ -337,6 +425,11 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
       candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis), likelihood});
     }
   }
+}
+
+bool PointTracker::starts_from_coast(const PointTrack& track) const {
+  return holds_last_motion() && track.branch == BranchType::kFather &&
+         track.life.consecutive_misses >= 1 && track.last_detected && track.coasted;
 }
 
 void PointTracker::hold_last_motion(PointTrack& track) const {
@@ -590,7 +683,7 @@ PointTracker::PlotRatios PointTracker::soft_update(int t, std::vector<Candidate>
       ratios.best = std::max(ratios.best, ratio);
     }
     if (beta_plots[k] >= kAssociationReportThreshold) {
-      frame.associations.push_back({number, plots_[c.plot].plot_id, beta_plots[k]});
+      add_association(frame, number, plots_[c.plot].plot_id, plots_[c.plot].scan, beta_plots[k]);
     }
     if (beta_plots[k] < kNegligibleBeta) continue;
     hypotheses_.push_back(std::move(c.hypothesis));
@@ -745,7 +838,8 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
       detail.append(" ").append(std::to_string(p.plot_id));
     }
     add_event(frame, "initiated", track.id, detail);
-    frame.associations.push_back({track.id, initiation.plots.back().plot_id, 1.0});
+    const PlotMeasurement& last = initiation.plots.back();
+    add_association(frame, track.id, last.plot_id, last.scan, 1.0);
     tracks_.push_back(std::move(track));
     ++report.initiated;
   }
@@ -825,52 +919,17 @@ double PointTracker::clutter_density(const PlotMeasurement& plot, int index) con
 }
 
 void PointTracker::estimate_clutter_density() {
-  // Plots of one measurement form are spread over the box they span in measurement space;
-  // the batch's clutter density is their count over its volume (targets add a few plots,
-  // which only makes it slightly conservative).
   auto_density_.assign(plots_.size(), 0.0);
   if (profile_.association.clutter_density) return;
-  struct Form {
-    int kind, size, count = 0;
-    MeasVec low, high;
-  };
-  std::vector<Form> forms;
-  std::vector<int> form_of(plots_.size());
-  for (std::size_t j = 0; j < plots_.size(); ++j) {
-    if (rejected_[j]) continue;
-    const PlotMeasurement& p = plots_[j];
-    const int kind = static_cast<int>(p.model.kind), size = static_cast<int>(p.z.size());
-    auto it = std::find_if(forms.begin(), forms.end(),
-                           [&](const Form& f) { return f.kind == kind && f.size == size; });
-    if (it == forms.end()) {
-      forms.push_back({kind, size, 0, p.z, p.z});
-      it = std::prev(forms.end());
-    }
-    it->low = it->low.cwiseMin(p.z);
-    it->high = it->high.cwiseMax(p.z);
-    ++it->count;
-    form_of[j] = static_cast<int>(it - forms.begin());
-  }
-  for (std::size_t j = 0; j < plots_.size(); ++j) {
-    if (rejected_[j]) continue;
-    const Form& f = forms[static_cast<std::size_t>(form_of[j])];
-    if (f.count < kMinPlotsForDensity) continue;
-    double volume = 1.0;
-    for (int i = 0; i < f.size; ++i) volume *= std::max(f.high[i] - f.low[i], 1e-6);
-    auto_density_[j] = std::max(f.count, 1) / volume;
-  }
-  if (!profile_.association.clutter_map.enabled) return;
   // The clutter map counts the plots no firm track gates: those are the false plots.
   clutter_counted_.assign(plots_.size(), 0);
-  for (std::size_t j = 0; j < plots_.size(); ++j) clutter_counted_[j] = rejected_[j] ? 0 : 1;
-  for (const Candidate& c : candidates_) {
-    if (is_reported_as_firm(tracks_[c.track].life.status)) clutter_counted_[c.plot] = 0;
+  if (profile_.association.clutter_map.enabled) {
+    for (std::size_t j = 0; j < plots_.size(); ++j) clutter_counted_[j] = rejected_[j] ? 0 : 1;
+    for (const Candidate& c : candidates_) {
+      if (is_reported_as_firm(tracks_[c.track].life.status)) clutter_counted_[c.plot] = 0;
+    }
   }
-  const config::ClutterMapSpec& map = profile_.association.clutter_map;
-  clutter::raise_to_local_density(
-      plots_, clutter_counted_,
-      {.range = map.range_cell, .azimuth = map.azimuth_cell, .cartesian = map.cartesian_cell},
-      auto_density_);
+  density_.estimate(sensor_, windowed_, plots_, rejected_, clutter_counted_, auto_density_);
 }
 
 }  // namespace skytrack

@@ -31,6 +31,7 @@
 namespace skytrack {
 namespace {
 
+using tracking_detail::add_association;
 using tracking_detail::add_event;
 using tracking_detail::mode_spread;
 using tracking_detail::position_of;
@@ -284,6 +285,14 @@ void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) 
   // The manoeuvre models run from the track's estimate before this batch (a father is
   // updated by now), over the whole interval to the plot.
   const ImmEstimate& prior = previous_[static_cast<std::size_t>(t)];
+  if (covered_[t] == 0 && scan.coverage && !starts_from_coast(track)) {
+    // A sector look far from the track: a bound on its manoeuvre gate says so cheaply.
+    SearchRegion bound = region_bound(
+        t, scan, std::max(batch_mid_, prior.time), manoeuvre_threshold_[kMaxMeasurementDim],
+        std::max(region_accel_, 3.0 * profile_.branching.manoeuvre_accel_sigma));
+    bound.radius += seed_speed(t) * half_span_;
+    if (!covers_region(scan, bound.centre, bound.radius)) return;
+  }
   const auto [centre, radius] = manoeuvre_reach(prior, scan, &mode_reach_);
   if (covered_[t] == 0 && !covers_region(scan, centre, radius)) return;
   index_.within(centre, radius, neighbours_);
@@ -654,7 +663,6 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   // A son starts at its father's latest update (rule 6), a grandson at its son's first plot
   // (rule 7): plot-to-plot manoeuvre starts (§3.3).
   const std::optional<PlotMeasurement>& start = of_father ? parent.last_plot : parent.first_plot;
-  const std::uint64_t start_batch = of_father ? parent.last_plot_batch : parent.first_plot_batch;
   const PlotMeasurement& plot = plots_[pair.plot];
   if (!start || !(plot.time > start->time)) return;
   const std::int64_t parent_id = parent.id;
@@ -667,7 +675,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
 
   Initiation initiation;
   initiation.plots = {*start, plot};
-  initiation.scans = static_cast<int>(batches_ - start_batch + 1);
+  initiation.scans = tracking_detail::looks_between(start->sweep, plot.sweep) + 1;
   PointTrack branch;
   branch.id = next_id_++;
   branch.branch = of_father ? BranchType::kSon : BranchType::kGrandson;
@@ -682,7 +690,6 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
       of_father ? son_start(pair.track, plot) : start_estimate(initiation, branch.life);
   branch.quality = parent_quality;
   branch.first_plot = *start;
-  branch.first_plot_batch = start_batch;
   branch.last_plot = plot;
   branch.last_plot_batch = batches_;
   branch.score = score;
@@ -690,7 +697,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   branch.life.support = parent_support + std::log(kManoeuvreOnset);
   tree_.add_branch(branch.id, parent_id);
   used_by_branch_[pair.plot] = 1;
-  frame.associations.push_back({branch.id, plot.plot_id, pair.probability});
+  add_association(frame, branch.id, plot.plot_id, plot.scan, pair.probability);
   add_event(frame, "branch_created", father,
             name(branch.branch, branch.id) + " of " + name(parent_type, parent_id) + " from plot " +
                 std::to_string(plot.plot_id));
@@ -963,7 +970,6 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
   branch.from_chain = true;
   branch.quality = tracks_[father].quality;
   branch.first_plot = initiation.plots.front();
-  branch.first_plot_batch = batches_ + 1 - static_cast<std::uint64_t>(initiation.scans);
   branch.last_plot = plot;
   branch.last_plot_batch = batches_;
   branch.score = score;
@@ -976,7 +982,7 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
   }
   add_event(frame, "branch_created", father_id,
             detail.append(" (a plot chain in its manoeuvre gate)"));
-  frame.associations.push_back({branch.id, plot.plot_id, 1.0});
+  add_association(frame, branch.id, plot.plot_id, plot.scan, 1.0);
   ++report.branches_created;
   slots_[branch.id] = static_cast<int>(tracks_.size());
   tracks_.push_back(std::move(branch));

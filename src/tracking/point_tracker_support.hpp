@@ -57,6 +57,19 @@ inline Eigen::Vector3d velocity_of(const StateVec& x, int dims) {
   return v;
 }
 
+/// A plot -> track decision of this frame; the plot's batch is named when it is not the
+/// frame's (a plot held over to a later look).
+inline void add_association(TrackFrame& frame, std::int64_t track, std::int64_t plot_id,
+                            std::uint64_t plot_scan, double probability) {
+  frame.associations.push_back({track, plot_id, probability, std::nullopt});
+  if (plot_scan != frame.scan) frame.associations.back().scan = plot_scan;
+}
+
+/// Looks at a target between two of its plots (0: the same look), from the antenna's sweep.
+inline int looks_between(double sweep_a, double sweep_b) {
+  return static_cast<int>(std::lround(std::abs(sweep_b - sweep_a) / (2.0 * 3.141592653589793)));
+}
+
 inline void add_event(TrackFrame& frame, const char* type, std::int64_t track, std::string detail) {
   frame.events.push_back({type, track, std::move(detail)});
 }

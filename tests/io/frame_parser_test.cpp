@@ -66,7 +66,7 @@ TEST(TrackFrameParser, ReadsTheContractExample) {
   ASSERT_EQ(track.modes.size(), 3u);
   EXPECT_EQ(track.modes[1].first, "ct_left");
   EXPECT_EQ(track.quality, 0.97);
-  EXPECT_EQ(frame->associations[0], (Association{12, 3, 0.93}));
+  EXPECT_EQ(frame->associations[0], (Association{12, 3, 0.93, std::nullopt}));
   EXPECT_EQ(frame->events[0].detail, "son 2 from plot 5");
 }
 
@@ -117,7 +117,7 @@ TEST(TrackFrameWriter, RoundTripsBitExactly) {
   group.extent = (Eigen::Matrix2d() << 400.0, 10.0, 10.0, 300.0).finished();
   group.members = 15;
   frame.tracks = {point, group};
-  frame.associations = {{12, 3, 0.93}, {13, 4, 1.0}};
+  frame.associations = {{12, 3, 0.93, std::nullopt}, {13, 4, 1.0, 41}};
   frame.events = {{"branch_created", 12, "son 2 from \"plot\" 5\n"}};
 
   const auto parsed = parse_track_frame(to_json(frame));

@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "eval_identity.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
 #include "skytrack/io/svg_plot.hpp"
 #include "skytrack/metrics/scenario_evaluation.hpp"
@@ -431,8 +432,19 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<EvalOptions>();
   CLI::App* cmd = app.add_subcommand(
       "eval", "Score tracks against ground truth: OSPA/GOSPA, RMSE, track continuity, GWD");
-  cmd->add_option("--truth", options->truth_path, "Ground-truth JSON Lines file")->required();
+  auto identity = std::make_shared<IdentityOptions>();
+  auto by_identity = std::make_shared<bool>(false);
+  cmd->add_option("--truth", options->truth_path, "Ground-truth JSON Lines file");
   cmd->add_option("--tracks", options->tracks_path, "Track-output JSON Lines file")->required();
+  cmd->add_flag("--identity", *by_identity,
+                "Score against the plots' transponder identities instead of a truth file "
+                "(needs --plots)");
+  cmd->add_option("--plots", identity->plots_path,
+                  "--identity: the plot stream the tracks were made from");
+  cmd->add_option("--gap", identity->gap,
+                  "--identity: a silence longer than this ends an identity's segment [s]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   cmd->add_option("--cutoff", options->cutoff, "OSPA/GOSPA cut-off c [m]")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
@@ -443,7 +455,25 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--plot", options->plot_path, "Write an SVG picture of the run");
   cmd->add_option("--per-scan", options->per_scan_path,
                   "Write per-scan metrics (JSON Lines if it ends in .jsonl, else CSV)");
-  cmd->callback([options, &exit_code] { exit_code = run_eval(*options); });
+  cmd->callback([options, identity, by_identity, &exit_code] {
+    if (*by_identity) {
+      if (identity->plots_path.empty()) {
+        fmt::print(stderr, "skytrack eval: --identity needs --plots\n");
+        exit_code = 2;
+        return;
+      }
+      identity->tracks_path = options->tracks_path;
+      identity->json = options->json;
+      exit_code = run_eval_identity(*identity);
+      return;
+    }
+    if (options->truth_path.empty()) {
+      fmt::print(stderr, "skytrack eval: --truth is required (or --identity --plots P)\n");
+      exit_code = 2;
+      return;
+    }
+    exit_code = run_eval(*options);
+  });
 }
 
 }  // namespace skytrack::tool

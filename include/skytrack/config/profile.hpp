@@ -22,6 +22,8 @@ enum class MeasurementUpdate { kEkf, kUnscented };
 enum class AssociationMethod { kJpda, kGnn };
 enum class ConfirmationMethod { kMOfN, kExistence };
 enum class NonManoeuvreGate { kUnion, kLastMotion };
+enum class AntennaRotation { kAuto, kRotating, kSnapshot };
+enum class RotationDirection { kAuto, kClockwise, kCounterclockwise };
 
 struct ProfileIdentity {
   std::string name;     // required; shown in logs, status and check-profile
@@ -227,11 +229,24 @@ struct BranchingSpec {
   bool operator==(const BranchingSpec&) const = default;
 };
 
+/// The radar's antenna, for batches that do not say what they looked at (no `coverage`): a
+/// rotating antenna's plots are regrouped into looks by the azimuth swept, so that a target is
+/// looked at once per revolution however the feed batches its plots (a revolution, a sector,
+/// a few plots); a snapshot sensor's batch is one look at everything.
+struct AntennaSpec {
+  // auto: rotating when the plots' own times advance with their azimuths at a steady rate.
+  AntennaRotation rotation = AntennaRotation::kAuto;
+  std::optional<double> period;  // [s] one revolution; absent (auto): measured from the plots
+  RotationDirection direction = RotationDirection::kAuto;  // seen from above; auto: measured
+  bool operator==(const AntennaSpec&) const = default;
+};
+
 struct TrackingProfile {
   ProfileIdentity identity;
   TrackingMode mode = TrackingMode::kPoint;
   int dimension = 0;  // 2: state [x vx y vy]; 3: adds [z vz]; 0 = auto (from the plots)
   MeasurementSpec measurement;
+  AntennaSpec antenna;
   std::vector<MotionModelSpec> motion_models = {
       {.name = "cv", .type = MotionModelType::kConstantVelocity, .accel_sigma = 2.0},
       {.name = "ct_left",
@@ -308,6 +323,30 @@ constexpr std::string_view to_string(ConfirmationMethod method) {
 
 constexpr std::string_view to_string(NonManoeuvreGate gate) {
   return gate == NonManoeuvreGate::kUnion ? "union" : "last_motion";
+}
+
+constexpr std::string_view to_string(AntennaRotation rotation) {
+  switch (rotation) {
+    case AntennaRotation::kAuto:
+      return "auto";
+    case AntennaRotation::kRotating:
+      return "rotating";
+    case AntennaRotation::kSnapshot:
+      return "snapshot";
+  }
+  return "?";
+}
+
+constexpr std::string_view to_string(RotationDirection direction) {
+  switch (direction) {
+    case RotationDirection::kAuto:
+      return "auto";
+    case RotationDirection::kClockwise:
+      return "clockwise";
+    case RotationDirection::kCounterclockwise:
+      return "counterclockwise";
+  }
+  return "?";
 }
 
 }  // namespace skytrack::config

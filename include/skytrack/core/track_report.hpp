@@ -45,6 +45,9 @@ struct Association {
   std::int64_t track = 0;
   std::int64_t plot = 0;
   double probability = 1.0;
+  // The batch the plot arrived in, when it is not this frame's: a rotating antenna's plot
+  // held over to a later look (its id is unique within that batch only).
+  std::optional<std::uint64_t> scan;
 
   bool operator==(const Association&) const = default;
 };

@@ -1,7 +1,9 @@
 #pragma once
 // The per-batch composition shared by the daemon and the tools: validation (bad plots and
-// out-of-order batches are counted and skipped, never fatal), then the tracker the profile's
-// mode selects. One Pipeline::process call per plot batch, in arrival order.
+// out-of-order batches are counted and skipped, never fatal), then, per sensor, the looks of
+// a rotating antenna regrouped from whatever batches the feed delivers (antenna_sweep.hpp,
+// look_assembler.hpp), then the tracker the profile's mode selects. One Pipeline::process
+// call per plot batch, in arrival order; each gives a frame at the batch's time.
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -11,6 +13,8 @@
 #include "skytrack/core/expected.hpp"
 #include "skytrack/core/plot.hpp"
 #include "skytrack/core/track_report.hpp"
+#include "skytrack/pipeline/antenna_sweep.hpp"
+#include "skytrack/pipeline/look_assembler.hpp"
 #include "skytrack/tracking/point_tracker.hpp"
 
 namespace skytrack {
@@ -46,14 +50,25 @@ class Pipeline {
   std::optional<std::string> check_order(const PlotScan& scan) const;
   /// The batch itself when all its plots are usable, else a copy without the bad ones.
   const PlotScan& without_invalid_plots(const PlotScan& scan);
+  struct SensorState;
+  /// Tracks a rotating antenna's batch through the looks it completes.
+  void track_rotating(const PlotScan& batch, SensorState& sensor);
 
   config::TrackingProfile profile_;
   std::optional<PointTracker> tracker_;  // created with the first batch (its dimension)
-  struct SensorClock {
-    std::uint64_t scan = 0;
+  struct SensorState {
+    std::uint64_t scan = 0;  // the latest batch's number and time
     double time = 0.0;
+    AntennaSweep antenna;
+    LookAssembler looks;
   };
-  std::map<std::uint32_t, SensorClock> sensors_;
+  std::map<std::uint32_t, SensorState> sensors_;
+  // Workspaces (reused).
+  std::vector<double> sweeps_;
+  std::vector<SearchRegion> regions_;
+  std::vector<AzimuthSpan> spans_;
+  Look look_;
+  TrackFrame look_frame_;
   PipelineCounters counters_;
   PlotScan clean_;  // a batch without its invalid plots, when it had some (reused)
   ScanResult result_;

@@ -14,6 +14,7 @@
 
 #include "skytrack/association/plot_index.hpp"
 #include "skytrack/config/profile.hpp"
+#include "skytrack/core/look.hpp"
 #include "skytrack/measurement/plot_measurement.hpp"
 
 namespace skytrack {
@@ -40,6 +41,9 @@ class Initiator {
   const std::vector<Initiation>& step(std::uint64_t batch, double time,
                                       const std::vector<PlotMeasurement>& plots,
                                       const Coverage& covered);
+
+  /// Appends each candidate chain's search region at `time`: where its next plot may lie.
+  void search_regions(double time, std::vector<SearchRegion>& out) const;
 
   std::size_t seeds() const { return seeds_.size(); }
   std::size_t candidates() const { return chains_.size(); }

@@ -29,9 +29,11 @@
 #include "skytrack/association/gnn_associator.hpp"
 #include "skytrack/association/jpda_solver.hpp"
 #include "skytrack/association/plot_index.hpp"
+#include "skytrack/clutter/clutter_density.hpp"
 #include "skytrack/clutter/clutter_rejector.hpp"
 #include "skytrack/config/profile.hpp"
 #include "skytrack/core/expected.hpp"
+#include "skytrack/core/look.hpp"
 #include "skytrack/core/plot.hpp"
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/filter/imm_filter.hpp"
@@ -68,8 +70,7 @@ struct PointTrack {
   // Branch tracking (paper 003); fathers only while branching is off.
   BranchType branch = BranchType::kFather;    // only fathers are reported
   std::optional<PlotMeasurement> first_plot;  // a branch's start plot (§1 (6)-(7))
-  std::uint64_t first_plot_batch = 0;
-  std::optional<PlotMeasurement> last_plot;  // the plot of its latest confirmed pair
+  std::optional<PlotMeasurement> last_plot;   // the plot of its latest confirmed pair
   std::uint64_t last_plot_batch = 0;
   double score = 0.0;     // a branch's summed log pair probabilities: the least likely is pruned
   bool replaced = false;  // a father a branch replaced: dropped without a report
@@ -103,8 +104,19 @@ class PointTracker {
   /// Checks the profile's models and matrices; fails with a message naming what is wrong.
   static Expected<PointTracker> create(const config::TrackingProfile& profile, int dims);
 
-  /// Processes one batch; fills `frame` (tracks at scan.time, associations, events).
-  void process(const PlotScan& scan, TrackFrame& frame, ScanReport& report);
+  /// Processes one look; fills `frame` (tracks at scan.time, associations, events). Without
+  /// `sources` the look is the batch `scan` as it arrived, a look at every direction it covers.
+  void process(const PlotScan& scan, TrackFrame& frame, ScanReport& report,
+               const LookSources* sources = nullptr);
+
+  /// Reports the tracks at scan.time without a look (a batch whose plots all wait for a
+  /// later look); nothing is updated or aged.
+  void report_only(const PlotScan& scan, TrackFrame& frame, ScanReport& report);
+
+  /// The search region of every track (its widest gate round its prediction to `time`, for
+  /// plots with the sigmas of batch `header`) and of every candidate chain of the initiator:
+  /// where this tracker may take a plot.
+  void search_regions(const PlotScan& header, double time, std::vector<SearchRegion>& out) const;
 
   /// Every track: the fathers (reported) and, with branching, their sons and grandsons.
   const std::vector<PointTrack>& tracks() const { return tracks_; }
@@ -143,13 +155,25 @@ class PointTracker {
                          std::span<const double> beta_plots, double beta_miss, std::int64_t number,
                          TrackFrame& frame);
 
-  void make_measurements(const PlotScan& scan, ScanReport& report);
+  void make_measurements(const PlotScan& scan, const LookSources* sources, ScanReport& report);
+  /// A region holding track t's gate at `threshold` (chi-square) round its prediction to
+  /// `time`, for a target accelerating up to `accel` [m/s^2]: cheap, never smaller than the
+  /// gate's own search region.
+  SearchRegion region_bound(int t, const PlotScan& header, double time, double threshold,
+                            double accel) const;
+  double seed_speed(int t) const {
+    return region_seeds_[static_cast<std::size_t>(t)].velocity.norm();
+  }
+  void start_frame(const PlotScan& scan, TrackFrame& frame) const;
   double plot_spread_at(const Eigen::Vector3d& position, const PlotScan& scan) const;
   /// True when the batch looked at `position` (always, unless it covers only a sector).
   bool covers(const PlotScan& scan, const Eigen::Vector3d& position) const;
   /// True when a search region (centre, radius) reaches into the batch's coverage.
   bool covers_region(const PlotScan& scan, const Eigen::Vector3d& centre, double radius) const;
   void gate(const PlotScan& scan, double batch_mid, double half_span);
+  /// A father whose manoeuvre gate and sons start from its IMM's coast since its last
+  /// detection (it holds its last motion since a miss), not from its estimate.
+  bool starts_from_coast(const PointTrack& track) const;
   /// branching.coast_on_last_motion is on (and branching).
   bool holds_last_motion() const;
   /// branching.last_motion_false_plots: a father's last motion's gate, of which `last_motion`
@@ -284,6 +308,18 @@ class PointTracker {
   Eigen::VectorXd manoeuvre_start_;     // their probabilities at a gate's start (uniform)
   Initiator initiator_;
   clutter::ClutterRejector clutter_;
+  clutter::ClutterDensity density_;
+  struct RegionSeed {  // a track's combined estimate at its own time (search_regions)
+    std::int64_t id = -1;
+    double time = 0.0;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero(), velocity = Eigen::Vector3d::Zero();
+    double spread = 0.0, velocity_spread = 0.0;  // [m], [m/s]
+  };
+  mutable std::vector<RegionSeed> region_seeds_;  // per track slot
+  double region_accel_ = 0.0;                     // [m/s^2]
+  double max_turn_rate_ = 0.0;                    // [rad/s]
+  std::uint32_t sensor_ = 0;                      // this look's sensor
+  bool windowed_ = false;  // its density is estimated over the sensor's last revolution
   ClusterBuilder clusters_;
   JpdaSolver jpda_;
   JpdaSolver jpda_manoeuvre_;  // the manoeuvre kinds' clusters (branching)
