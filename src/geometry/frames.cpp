@@ -7,6 +7,9 @@
 namespace skytrack {
 
 Eigen::Matrix3d body_to_enu(const Eigen::Vector3d& attitude) {
+  // A ground radar's level, north-facing body frame is ENU itself (the common case, asked
+  // for per track per look).
+  if (attitude.isZero()) return Eigen::Matrix3d::Identity();
   const double heading = attitude[0], pitch = attitude[1], roll = attitude[2];
   const Eigen::Matrix3d yaw = Eigen::AngleAxisd(-heading, Eigen::Vector3d::UnitZ()).matrix();
   const Eigen::Matrix3d nose_up = Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitX()).matrix();

@@ -41,11 +41,13 @@ double body_azimuth(const Plot& plot, const PlatformState& platform) {
 AntennaSweep::AntennaSweep(const config::AntennaSpec& spec) : spec_(spec) {
   using config::AntennaRotation;
   using config::RotationDirection;
+  if (spec.rotation == AntennaRotation::kSnapshot) kind_ = Kind::kSnapshot;
   // A rotating antenna described in full needs no learning.
   if (spec.rotation == AntennaRotation::kRotating && spec.period &&
       spec.direction != RotationDirection::kAuto) {
     rate_ = kTwoPi / *spec.period;
     sense_ = spec.direction == RotationDirection::kClockwise ? 1 : -1;
+    kind_ = Kind::kRotating;
   }
 }
 
@@ -58,7 +60,10 @@ void AntennaSweep::learn(const std::vector<Sample>& ordered) {
   for (const Sample& s : ordered) {
     if (previous && s.time > previous->time) {
       const double rate = wrap_angle(s.azimuth - previous->azimuth) / (s.time - previous->time);
-      if (std::abs(rate) >= kMinRate && std::abs(rate) <= kMaxRate) rates_.push_back(rate);
+      if (std::abs(rate) >= kMinRate && std::abs(rate) <= kMaxRate) {
+        rates_.push_back(rate);
+        ++samples_;
+      }
     }
     previous = s;
   }
@@ -70,12 +75,22 @@ void AntennaSweep::learn(const std::vector<Sample>& ordered) {
   const auto agree = std::count_if(rates_.begin(), rates_.end(), [m](double r) {
     return std::abs(r - m) <= kAgreeWithin * std::abs(m);
   });
-  if (static_cast<double>(agree) < kAgreeShare * static_cast<double>(rates_.size())) return;
   const int measured = m > 0.0 ? 1 : -1;
-  if (spec_.direction == config::RotationDirection::kClockwise && measured < 0) return;
-  if (spec_.direction == config::RotationDirection::kCounterclockwise && measured > 0) return;
+  const bool sense_ok =
+      !(spec_.direction == config::RotationDirection::kClockwise && measured < 0) &&
+      !(spec_.direction == config::RotationDirection::kCounterclockwise && measured > 0);
+  if (static_cast<double>(agree) < kAgreeShare * static_cast<double>(rates_.size()) || !sense_ok) {
+    // A full window of pairs that do not agree: no steady rotation (unless the profile says
+    // it rotates: then keep learning).
+    if (kind_ == Kind::kUndecided && rates_.size() >= kSamplesKept &&
+        spec_.rotation != config::AntennaRotation::kRotating) {
+      kind_ = Kind::kSnapshot;
+    }
+    return;
+  }
   sense_ = measured;
   rate_ = spec_.period ? kTwoPi / *spec_.period : std::abs(m);
+  kind_ = Kind::kRotating;
 }
 
 double AntennaSweep::unwrap(double azimuth, double time) const {
@@ -84,9 +99,7 @@ double AntennaSweep::unwrap(double azimuth, double time) const {
   return u + kTwoPi * std::round((predicted - u) / kTwoPi);
 }
 
-bool AntennaSweep::assign(const PlotScan& scan, std::vector<double>& sweeps) {
-  sweeps.clear();
-  if (spec_.rotation == config::AntennaRotation::kSnapshot) return false;
+void AntennaSweep::order(const PlotScan& scan) {
   const std::size_t n = scan.plots.size();
   order_.resize(n);
   for (std::size_t i = 0; i < n; ++i) order_[i] = i;
@@ -98,21 +111,39 @@ bool AntennaSweep::assign(const PlotScan& scan, std::vector<double>& sweeps) {
     ordered_.push_back(
         {plot_time(scan.plots[i], scan), body_azimuth(scan.plots[i], scan.platform)});
   }
-  const bool was_rotating = rotating();
-  // Until the rate is known the pairs teach it; afterwards they refine it (without a period
-  // in the profile), within the agreement band of the rate found.
+}
+
+AntennaSweep::Kind AntennaSweep::read(const PlotScan& scan) {
+  if (kind_ == Kind::kSnapshot) return kind_;
+  if (kind_ == Kind::kUndecided && !scan.plots.empty() &&
+      std::none_of(scan.plots.begin(), scan.plots.end(),
+                   [](const Plot& p) { return p.time.has_value(); })) {
+    kind_ = Kind::kSnapshot;  // no plot timed by the sweep: nothing to follow it by
+    return kind_;
+  }
+  // Until the rate is known the pairs teach it; afterwards (without a period in the
+  // profile) they refine it.
+  order(scan);
   learn(ordered_);
   if (!ordered_.empty()) last_ = ordered_.back();
-  if (!rotating()) return false;
-  if (!was_rotating && !anchored_ && ordered_.empty()) return false;
+  return kind_;
+}
+
+void AntennaSweep::give_up() {
+  if (kind_ == Kind::kUndecided) kind_ = Kind::kSnapshot;
+}
+
+void AntennaSweep::place(const PlotScan& scan, double base, std::vector<double>& sweeps) {
+  sweeps.clear();
+  if (kind_ != Kind::kRotating) return;
+  order(scan);
   if (!anchored_ && !ordered_.empty()) {
     latest_time_ = ordered_.front().time;
-    latest_sweep_ = wrap_angle_positive(sense_ * ordered_.front().azimuth);
+    latest_sweep_ = base + kTwoPi + wrap_angle_positive(sense_ * ordered_.front().azimuth);
     anchored_ = true;
   }
-  if (!anchored_) return false;
-  sweeps.resize(n);
-  for (std::size_t k = 0; k < n; ++k) {
+  sweeps.resize(scan.plots.size());
+  for (std::size_t k = 0; k < ordered_.size(); ++k) {
     const Sample& s = ordered_[k];
     const double sweep = unwrap(s.azimuth, s.time);
     sweeps[order_[k]] = sweep;
@@ -121,7 +152,6 @@ bool AntennaSweep::assign(const PlotScan& scan, std::vector<double>& sweeps) {
       latest_sweep_ = std::max(latest_sweep_, sweep);
     }
   }
-  return true;
 }
 
 double AntennaSweep::sweep_at(double time) const {

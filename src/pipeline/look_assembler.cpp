@@ -71,12 +71,28 @@ bool LookAssembler::take(std::span<const AzimuthSpan> spans, const AntennaSweep&
   if (headers_.empty()) return false;
   const double c = cut(spans, antenna);
   if (!(c > from_ + kEdge)) return false;
-  const PlotScan& latest = headers_.back();
-  look.scan = latest;
-  look.scan.coverage.reset();
+  release(c, look);
   // (from, c]: a sector's ends are both inside it, and the previous look took `from`.
+  look.scan.coverage.reset();
   if (c - from_ < kTwoPi) look.scan.coverage = antenna.sector(from_ + kEdge, c);
+  look.whole = false;
+  from_ = c;
+  return true;
+}
+
+void LookAssembler::take_all(Look& look) {
+  if (headers_.empty()) return;
+  release(std::max(reached_, from_), look);
+  for (const double s : look.sweep) from_ = std::max(from_, s);
+  look.scan.coverage.reset();
+  look.whole = true;
+  from_ = std::max(from_, reached_);
+}
+
+void LookAssembler::release(double c, Look& look) {
+  look.scan = headers_.back();
   look.scan.plots.clear();
+  look.sweep_to = c;
   look.batches.clear();
   look.batch_of.clear();
   look.sweep.clear();
@@ -111,8 +127,6 @@ bool LookAssembler::take(std::span<const AzimuthSpan> spans, const AntennaSweep&
   }
   headers_.resize(next);
   for (Held& h : held_) h.batch = renumber[h.batch];
-  from_ = c;
-  return true;
 }
 
 }  // namespace skytrack

@@ -4,38 +4,12 @@
 #include <cmath>
 
 #include "skytrack/core/transponder.hpp"
-#include "skytrack/geometry/frames.hpp"
 
 namespace skytrack {
 namespace {
 
-constexpr double kPi = 3.141592653589793;
-
 bool finite(const std::optional<double>& v) {
   return !v || std::isfinite(*v);
-}
-
-/// Adds a later look's counts to a batch's report; the track counts are the later look's.
-void add_look(ScanReport& total, const ScanReport& look) {
-  total.plots += look.plots;
-  total.plots_invalid += look.plots_invalid;
-  total.plots_rejected_clutter += look.plots_rejected_clutter;
-  total.tentative = look.tentative;
-  total.confirmed = look.confirmed;
-  total.coasting = look.coasting;
-  total.initiated += look.initiated;
-  total.deleted += look.deleted;
-  total.clusters += look.clusters;
-  total.largest_cluster = std::max(total.largest_cluster, look.largest_cluster);
-  total.approximated_clusters += look.approximated_clusters;
-  total.numeric_failures += look.numeric_failures;
-  total.branches = look.branches;
-  total.branches_created += look.branches_created;
-  total.branches_promoted += look.branches_promoted;
-  total.branches_pruned += look.branches_pruned;
-  total.predict += look.predict;
-  total.associate += look.associate;
-  total.manage += look.manage;
 }
 
 }  // namespace
@@ -103,58 +77,6 @@ const PlotScan& Pipeline::without_invalid_plots(const PlotScan& scan) {
   return clean_;
 }
 
-void Pipeline::track_rotating(const PlotScan& batch, SensorState& sensor) {
-  const AntennaSweep& antenna = sensor.antenna;
-  // How far the beam is known to have swept: to the latest plot, to the batch's time when
-  // that is later (a batch stamped when its sweep ended), to the end of its coverage.
-  double reached = antenna.latest();
-  double time = batch.time;
-  for (const Plot& plot : batch.plots) time = std::max(time, plot_time(plot, batch));
-  reached = std::max(reached, antenna.sweep_at(batch.time));
-  if (batch.coverage) {
-    const double end = antenna.sense() > 0 ? batch.coverage->to : batch.coverage->from;
-    reached = std::max(reached, antenna.sweep_of(end, antenna.sweep_at(batch.time) - kPi));
-  }
-  sensor.looks.add(batch, sweeps_, reached);
-  TrackFrame& frame = result_.frame;
-  ScanReport& report = result_.report;
-  bool looked = false;
-  for (;;) {
-    // Each search region as the beam sees it, from the tracks as they are now.
-    tracker_->search_regions(batch, time, regions_);
-    spans_.clear();
-    for (const SearchRegion& region : regions_) {
-      const PolarPoint polar = enu_to_polar(region.centre, batch.platform);
-      const double half =
-          region.radius < polar.range ? std::asin(region.radius / polar.range) : kPi;
-      spans_.push_back({polar.azimuth, half});
-    }
-    if (!sensor.looks.take(spans_, antenna, look_)) break;
-    const LookSources sources = look_.sources();
-    if (!looked) {
-      tracker_->process(look_.scan, frame, report, &sources);
-      looked = true;
-      continue;
-    }
-    // A batch that completes several looks gives one frame: every look's decisions, the
-    // tracks after the last, and the tracks deleted on the way.
-    ScanReport next;
-    tracker_->process(look_.scan, look_frame_, next, &sources);
-    for (TrackReport& track : frame.tracks) {
-      if (track.status == TrackStatus::kDeleted) look_frame_.tracks.push_back(std::move(track));
-    }
-    frame.tracks.swap(look_frame_.tracks);
-    frame.associations.insert(frame.associations.end(), look_frame_.associations.begin(),
-                              look_frame_.associations.end());
-    frame.events.insert(frame.events.end(), look_frame_.events.begin(), look_frame_.events.end());
-    add_look(report, next);
-  }
-  if (!looked) tracker_->report_only(batch, frame, report);
-  // The frame belongs to the batch that arrived.
-  frame.scan = batch.scan;
-  frame.time = batch.time;
-}
-
 const ScanResult& Pipeline::process(const PlotScan& scan) {
   result_.accepted = false;
   result_.rejection.clear();
@@ -170,19 +92,15 @@ const ScanResult& Pipeline::process(const PlotScan& scan) {
     result_.rejection = "sensor " + std::to_string(scan.sensor) + ": non-finite platform state";
     return result_;
   }
-  auto sensor =
-      sensors_.try_emplace(scan.sensor, SensorState{0, 0.0, AntennaSweep(profile_.antenna), {}})
-          .first;
-  sensor->second.scan = scan.scan;
-  sensor->second.time = scan.time;
+  SensorState& sensor =
+      sensors_.try_emplace(scan.sensor, SensorState{0, 0.0, SensorFeed(profile_.antenna)})
+          .first->second;
+  sensor.scan = scan.scan;
+  sensor.time = scan.time;
   const PlotScan& usable = without_invalid_plots(scan);
   if (!tracker_)
     tracker_.emplace(*PointTracker::create(profile_, tracker_dimension(profile_, usable)));
-  if (sensor->second.antenna.assign(usable, sweeps_)) {
-    track_rotating(usable, sensor->second);
-  } else {
-    tracker_->process(usable, result_.frame, result_.report);
-  }
+  sensor.feed.feed(usable, *tracker_, result_.frame, result_.report);
   result_.report.plots_invalid += static_cast<int>(scan.plots.size() - usable.plots.size());
   counters_.plots_processed += scan.plots.size();
   counters_.plots_invalid += static_cast<std::uint64_t>(result_.report.plots_invalid);

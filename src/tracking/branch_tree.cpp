@@ -142,6 +142,14 @@ void BranchTree::promote(std::int64_t branch, std::vector<BranchChange>& out, bo
   --branches_;
 }
 
+void BranchTree::rename(std::int64_t id, std::int64_t number) {
+  auto node = nodes_.extract(id);
+  if (node.empty()) return;
+  for (const std::int64_t child : node.mapped().children) nodes_.at(child).parent = number;
+  node.key() = number;
+  nodes_.insert(std::move(node));
+}
+
 void BranchTree::remove(std::int64_t id, std::vector<BranchChange>& out) {
   const BranchNode* node = find(id);
   if (node == nullptr) return;

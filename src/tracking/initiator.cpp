@@ -10,6 +10,18 @@ namespace {
 
 // Largest manoeuvre a chain may show between two plots [m/s^2] (about 6 g).
 constexpr double kMaxAcceleration = 60.0;
+constexpr double kHalfTurn = 3.141592653589793;  // [rad] of sweep
+
+/// Whole revolutions of sweep between two plots (one sensor's; 0 for two sensors').
+int revolutions(const PlotMeasurement& a, const PlotMeasurement& b) {
+  if (a.sensor != b.sensor) return 0;
+  return static_cast<int>(std::lround((b.sweep - a.sweep) / (2.0 * kHalfTurn)));
+}
+
+/// Two plots of one sensor seen within half a revolution: one look, not one target's two.
+bool same_revolution(const PlotMeasurement& a, const PlotMeasurement& b) {
+  return a.sensor == b.sensor && b.sweep - a.sweep <= kHalfTurn;
+}
 
 }  // namespace
 
@@ -26,13 +38,36 @@ Initiator::Initiator(const config::InitiationSpec& spec, int dims) : spec_(spec)
 const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
                                                const std::vector<PlotMeasurement>& plots,
                                                const Coverage& covered) {
+  // A snapshot sensor: each batch is one revolution of sweep after the last.
+  const double sweep = 2.0 * kHalfTurn * static_cast<double>(batch);
+  snapshot_plots_ = plots;
+  for (PlotMeasurement& p : snapshot_plots_) p.sweep = sweep;
+  return step(batch, time, plots.empty() ? 0 : plots.front().sensor, sweep, snapshot_plots_,
+              covered);
+}
+
+const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
+                                               std::uint32_t sensor, double sweep,
+                                               const std::vector<PlotMeasurement>& plots,
+                                               const Coverage& covered) {
   completed_.clear();
-  // This batch is a look at every seed and chain it covers.
+  // This batch is a look at every seed and chain it covers that the beam has not passed
+  // within the last half revolution (a chain predicted across the cut it was made at).
+  const auto looks_at = [&](double& last, std::uint32_t seen_by, const Eigen::Vector3d& position) {
+    if ((seen_by == sensor && sweep - last <= kHalfTurn) || !covered(position)) return false;
+    if (seen_by == sensor) last = sweep;
+    return true;
+  };
   for (Seed& seed : seeds_) {
-    if (seed.batch != batch && covered(seed.position)) ++seed.looks;
+    if (seed.batch != batch && looks_at(seed.looked, seed.plot.sensor, seed.position)) {
+      ++seed.looks;
+    }
   }
   for (Chain& chain : chains_) {
-    if (covered(chain.position + chain.velocity * (time - chain.time))) ++chain.looks;
+    if (looks_at(chain.looked, chain.plots.back().sensor,
+                 chain.position + chain.velocity * (time - chain.time))) {
+      ++chain.looks;
+    }
   }
   positions_.clear();
   for (const PlotMeasurement& plot : plots) positions_.push_back(approximate_position(plot));
@@ -41,7 +76,7 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
   extend_chains(batch, plots);
   pair_with_seeds(batch, plots);
   for (std::size_t i = 0; i < plots.size(); ++i) {
-    if (!used_[i]) seeds_.push_back({plots[i], positions_[i], batch, 0});
+    if (!used_[i]) seeds_.push_back({plots[i], positions_[i], batch, 0, plots[i].sweep});
   }
   // Chains with M plots become tracks.
   for (std::size_t c = 0; c < chains_.size();) {
@@ -55,6 +90,13 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
     }
   }
   retire();
+  // In the order their last plots were seen, so that a revolution's new tracks are numbered
+  // alike whether it came whole or in sectors.
+  std::sort(completed_.begin(), completed_.end(), [](const Initiation& a, const Initiation& b) {
+    const PlotMeasurement& x = a.plots.back();
+    const PlotMeasurement& y = b.plots.back();
+    return std::tie(x.time, x.z[0], x.z[1]) < std::tie(y.time, y.z[0], y.z[1]);
+  });
   return completed_;
 }
 
@@ -88,7 +130,7 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
     index_.within(chain.position + chain.velocity * (t_mid - chain.time), radius, neighbours_);
     for (const int j : neighbours_) {
       const double dt = plots[j].time - chain.time;
-      if (dt <= 0.0) continue;
+      if (dt <= 0.0 || same_revolution(chain.plots.back(), plots[j])) continue;
       const Eigen::Vector3d expected = chain.position + chain.velocity * dt;
       const double gate =
           4.0 * (sigma_last + position_sigma(plots[j])) + 0.5 * kMaxAcceleration * dt * dt;
@@ -111,6 +153,8 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
     chain.position = positions_[e.plot];
     chain.time = plot.time;
     chain.last_batch = batch;
+    chain.looked = std::max(chain.looked, plot.sweep);
+    chain.looks = std::max(chain.looks, 1 + revolutions(chain.plots.front(), plot));
     chain.plots.push_back(plot);
   }
 }
@@ -151,7 +195,9 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
         const int s = static_cast<int>(group.begin) + member;
         const Seed& seed = seeds_[s];
         const double dt = plots[i].time - seed.plot.time;
-        if (dt <= 0.0 || seed.batch == batch || seed.looks < 1) continue;
+        // A plot of a later revolution than the seed's (a rotating antenna's next plot of a
+        // target may come before the beam has passed the seed's position again).
+        if (dt <= 0.0 || seed.batch == batch || same_revolution(seed.plot, plots[i])) continue;
         const double distance = (positions_[i] - seed.position).head(dims_).norm();
         const double slack = 3.0 * (position_sigma(plots[i]) + position_sigma(seed.plot));
         const double speed_low = (distance - slack) / dt, speed_high = (distance + slack) / dt;
@@ -169,8 +215,9 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
     chain.position = positions_[i];
     chain.velocity = (positions_[i] - seed.position) / (plots[i].time - seed.plot.time);
     chain.time = plots[i].time;
-    chain.looks = seed.looks + 1;
+    chain.looks = std::max(seed.looks + 1, 1 + revolutions(seed.plot, plots[i]));
     chain.last_batch = batch;
+    chain.looked = std::max(seed.looked, plots[i].sweep);
     chains_.push_back(std::move(chain));
     used_[i] = 1;
   }

@@ -196,6 +196,13 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
   start = Clock::now();
   initiate(scan, report, frame);
   if (branching()) retire_doomed_fathers(frame);
+  number_confirmed(frame);
+  // The tracks this look saw (aged or updated, or started or branched in it).
+  for (std::size_t t = 0; t < tracks_.size(); ++t) {
+    if (t >= covered_.size() || covered_[t] != 0 || took_candidates_[t] != 0) {
+      tracks_[t].set_looked(sensor_, look_sweep_);
+    }
+  }
   report_tracks(scan.time, report, frame);
   if (windowed_) density_.remember(sensor_, plots_, rejected_, clutter_counted_);
   report.manage = since(start);
@@ -262,6 +269,7 @@ void PointTracker::make_measurements(const PlotScan& scan, const LookSources* so
   clutter_counted_.assign(scan.plots.size(), 0);
   // A snapshot look is one revolution's worth of sweep after the last.
   const double snapshot_sweep = 2.0 * std::numbers::pi * static_cast<double>(batches_);
+  look_sweep_ = sources != nullptr ? sources->sweep_to : snapshot_sweep;
   for (std::size_t i = 0; i < scan.plots.size(); ++i) {
     const int from = sources != nullptr ? sources->batch_of[i] : -1;
     const PlotScan& header = from >= 0 ? sources->batches[static_cast<std::size_t>(from)] : scan;
@@ -271,6 +279,7 @@ void PointTracker::make_measurements(const PlotScan& scan, const LookSources* so
       ++report.plots_invalid;
       continue;
     }
+    measurement->sensor = scan.sensor;
     measurement->scan = header.scan;
     measurement->sweep = sources != nullptr ? sources->sweep[i] : snapshot_sweep;
     positions_.push_back(approximate_position(*measurement));
@@ -340,6 +349,7 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     }
   }
   covered_.assign(tracks_.size(), 1);
+  took_candidates_.assign(tracks_.size(), 0);
   dense_.assign(tracks_.size(), profile_.branching.last_motion_false_plots > 0.0 ? 0 : 1);
   suspended_at_gate_.clear();
   const double widest = gate_threshold_[kMaxMeasurementDim];
@@ -369,7 +379,8 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     const Eigen::Vector3d centre = position_of(mid.mean, layout_.dims);
     // A sector batch looks at a track whose predicted position lies in the sector; one whose
     // search region only reaches into it may take a plot from it but is not aged by it.
-    covered_[t] = covers(scan, centre) ? 1 : 0;
+    covered_[t] =
+        covers(scan, centre) && look_sweep_ - track.looked_by(sensor_) > std::numbers::pi ? 1 : 0;
     if (covered_[t] != 0 &&
         suspends_before_gating(tracks_[t], mid, std::max(batch_mid, estimate.time))) {
       tracks_[t].doomed = batches_;
@@ -421,6 +432,7 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
       // last motion's gate (branching.coast_on_last_motion), is a candidate.
       if (hypothesis.min_nis > gate_threshold_[plots_[j].model.size()]) continue;
       gated_[j] = 1;
+      took_candidates_[t] = 1;
       const double likelihood = hypothesis.likelihood;
       candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis), likelihood});
     }
@@ -816,13 +828,14 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     find_lost_fathers(scan);
     continue_lost_fathers(report, frame);
   }
-  for (const Initiation& initiation : initiator_.step(batches_, scan.time, unused, covered)) {
+  for (const Initiation& initiation :
+       initiator_.step(batches_, scan.time, sensor_, look_sweep_, unused, covered)) {
     if (branching()) {
       const int father = lost_father_of(initiation.plots.back());
       if (father >= 0 && start_chain_branch(father, initiation, report, frame)) continue;
     }
     PointTrack track;
-    track.id = next_id_++;
+    track.id = next_provisional_++;
     track.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
     track.life.existence = profile_.track_life.initial_existence;
     track.estimate = start_estimate(initiation, track.life);
@@ -842,6 +855,42 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     add_association(frame, track.id, last.plot_id, last.scan, 1.0);
     tracks_.push_back(std::move(track));
     ++report.initiated;
+  }
+}
+
+void PointTracker::number_confirmed(TrackFrame& frame) {
+  std::vector<int> due;
+  for (std::size_t t = 0; t < tracks_.size(); ++t) {
+    const PointTrack& track = tracks_[t];
+    if (track.id >= kProvisionalNumber && track.branch == BranchType::kFather &&
+        is_reported_as_firm(track.life.status)) {
+      due.push_back(static_cast<int>(t));
+    }
+  }
+  if (due.empty()) return;
+  const auto last_seen = [&](int t) {
+    const PointTrack& track = tracks_[static_cast<std::size_t>(t)];
+    return track.last_detected ? track.last_detected->time : track.estimate.time;
+  };
+  std::stable_sort(due.begin(), due.end(),
+                   [&](int a, int b) { return last_seen(a) < last_seen(b); });
+  for (const int t : due) {
+    PointTrack& track = tracks_[static_cast<std::size_t>(t)];
+    const std::int64_t provisional = track.id;
+    track.id = next_number_++;
+    if (branching()) {
+      tree_.rename(provisional, track.id);
+      slots_.erase(provisional);
+      slots_[track.id] = t;
+    }
+    for (Association& a : frame.associations) {
+      if (a.track == provisional) a.track = track.id;
+    }
+    for (TrackEvent& e : frame.events) {
+      if (e.track != provisional) continue;
+      e.track = track.id;
+      if (e.type == "confirmed") e.detail = "tentative " + std::to_string(provisional);
+    }
   }
 }
 

@@ -484,7 +484,7 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
     }
     if (!make_room(father_id, father_id, score, d.plot_id, report, frame)) continue;
     PointTrack son;
-    son.id = next_id_++;
+    son.id = next_provisional_++;
     son.branch = BranchType::kSon;
     son.coast_son = true;
     son.life.scans = 1;
@@ -677,7 +677,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   initiation.plots = {*start, plot};
   initiation.scans = tracking_detail::looks_between(start->sweep, plot.sweep) + 1;
   PointTrack branch;
-  branch.id = next_id_++;
+  branch.id = next_provisional_++;
   branch.branch = of_father ? BranchType::kSon : BranchType::kGrandson;
   branch.life = initiated_life(2, initiation.scans);
   // Its existence starts at its pair's association probability (the chance that the plot
@@ -965,7 +965,7 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
       !make_room(father_id, father_id, score, plot.plot_id, report, frame)) {
     return false;
   }
-  branch.id = next_id_++;
+  branch.id = next_provisional_++;
   branch.branch = BranchType::kSon;
   branch.from_chain = true;
   branch.quality = tracks_[father].quality;
@@ -1006,6 +1006,7 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
         ++report.branches_pruned;
         break;
       case BranchChange::Kind::kIndependent:
+        // A new father: numbered once confirmed (number_confirmed).
         track.branch = BranchType::kFather;
         add_event(frame, "initiated", change.track, "independent " + who + ": " + reason);
         ++report.initiated;

@@ -6,6 +6,7 @@
 // non-manoeuvre gate (CV, 1 m/s^2, P_G 0.999) is a few tens of metres wide; the manoeuvre
 // gate (CV, 100 m/s^2, P_G 0.9999) about 250 m, so a plot 150 m off the prediction lies
 // in the manoeuvre gate only.
+#include <cctype>
 #include <algorithm>
 #include <limits>
 #include <string>
@@ -49,6 +50,35 @@ config::TrackingProfile suspending_profile() {
   return p;
 }
 
+/// The tests name branches and tentative tracks by the order they were made in (1, 2, ...),
+/// as the tracker's provisional numbers (kProvisionalNumber, + 1, ...) are: a provisional
+/// number n reads as n - kProvisionalNumber + 1. Confirmed tracks keep their numbers.
+std::int64_t shown(std::int64_t number) {
+  return number >= kProvisionalNumber ? number - kProvisionalNumber + 1 : number;
+}
+
+/// The provisional number shown as n.
+std::int64_t provisional(std::int64_t n) {
+  return kProvisionalNumber + n - 1;
+}
+
+/// `text` with every provisional number in it shown as above.
+std::string shown(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    if (!std::isdigit(static_cast<unsigned char>(text[i]))) {
+      out += text[i++];
+      continue;
+    }
+    std::size_t j = i;
+    while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) ++j;
+    const std::string digits = text.substr(i, j - i);
+    out += digits.size() >= 13 ? std::to_string(shown(std::stoll(digits))) : digits;
+    i = j;
+  }
+  return out;
+}
+
 struct Script {
   explicit Script(const config::TrackingProfile& profile)
       : tracker(*PointTracker::create(profile, 2)) {}
@@ -83,12 +113,12 @@ struct Script {
 
   std::vector<std::int64_t> reported() const {
     std::vector<std::int64_t> ids;
-    for (const TrackReport& t : frame.tracks) ids.push_back(t.id);
+    for (const TrackReport& t : frame.tracks) ids.push_back(shown(t.id));
     return ids;
   }
   const TrackReport* track(std::int64_t id) const {
     for (const TrackReport& t : frame.tracks) {
-      if (t.id == id) return &t;
+      if (shown(t.id) == id) return &t;
     }
     return nullptr;
   }
@@ -96,18 +126,18 @@ struct Script {
   std::vector<std::string> events(const std::string& type) const {
     std::vector<std::string> out;
     for (const TrackEvent& e : frame.events) {
-      if (e.type == type) out.push_back(std::to_string(e.track) + ": " + e.detail);
+      if (e.type == type) out.push_back(std::to_string(shown(e.track)) + ": " + shown(e.detail));
     }
     return out;
   }
   bool associated(std::int64_t track, std::int64_t plot) const {
     return std::any_of(frame.associations.begin(), frame.associations.end(),
-                       [&](const Association& a) { return a.track == track && a.plot == plot; });
+                       [&](const Association& a) { return shown(a.track) == track && a.plot == plot; });
   }
   /// The probability of the association (track, plot) in the latest frame (0 if none).
   double probability(std::int64_t track, std::int64_t plot) const {
     for (const Association& a : frame.associations) {
-      if (a.track == track && a.plot == plot) return a.probability;
+      if (shown(a.track) == track && a.plot == plot) return a.probability;
     }
     return 0.0;
   }
@@ -128,14 +158,14 @@ struct Script {
   /// TrackLife::support of the live track or branch numbered `id` (NaN if none).
   double support(std::int64_t id) const {
     for (const PointTrack& t : tracker.tracks()) {
-      if (t.id == id && t.life.status != TrackStatus::kDeleted) return t.life.support;
+      if (shown(t.id) == id && t.life.status != TrackStatus::kDeleted) return t.life.support;
     }
     return std::numeric_limits<double>::quiet_NaN();
   }
   /// TrackLife::existence of the live track or branch numbered `id` (NaN if none).
   double existence(std::int64_t id) const {
     for (const PointTrack& t : tracker.tracks()) {
-      if (t.id == id && t.life.status != TrackStatus::kDeleted) return t.life.existence;
+      if (shown(t.id) == id && t.life.status != TrackStatus::kDeleted) return t.life.existence;
     }
     return std::numeric_limits<double>::quiet_NaN();
   }
@@ -163,10 +193,10 @@ TEST(BranchTracker, FatherManoeuvrePairStartsAHiddenSonFromTheFathersLastPlot) {
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_EQ(s.frame.tracks[0].status, TrackStatus::kCoasting);
   EXPECT_TRUE(s.associated(2, 401));  // the branch's pair is in the associations
-  const BranchNode* son = s.tracker.branch_tree().find(2);
+  const BranchNode* son = s.tracker.branch_tree().find(provisional(2));
   ASSERT_NE(son, nullptr);
   EXPECT_EQ(son->type, BranchType::kSon);
-  EXPECT_EQ(son->parent, 1);
+  EXPECT_EQ(shown(son->parent), 1);
   EXPECT_EQ(s.report.branches, 1);
   // AND the son starts from the father's latest update (plot 301 at t = 3): the father's
   // state predicted by the manoeuvre models and updated with the new plot, so it sits on the
@@ -202,7 +232,7 @@ TEST(BranchTracker, ConfirmedSonReplacesTheFatherAndKeepsItsNumber) {
   EXPECT_TRUE(s.associated(2, 501));
   EXPECT_TRUE(s.events("deleted").empty());
   EXPECT_EQ(s.live_branches(), 0);
-  EXPECT_FALSE(s.tracker.branch_tree().contains(2));
+  EXPECT_FALSE(s.tracker.branch_tree().contains(provisional(2)));
   EXPECT_EQ(s.tracker.branch_tree().find(1)->type, BranchType::kFather);
   // AND the track goes on along the son's line under number 1
   s.scan(6, {{600.0, 450.0}});
@@ -237,7 +267,7 @@ TEST(BranchTracker, SonWithANonManoeuvreUpdateBecomesAnIndependentFather) {
   s.scan(4, {{400.0, 150.0}});  // son 2
   s.scan(5, {{500.0, 300.0}});  // son 2's non-manoeuvre update: 3 of 4, not confirmed
   ASSERT_TRUE(s.events("branch_promoted").empty());
-  ASSERT_TRUE(s.tracker.branch_tree().find(2)->non_manoeuvre_updated);
+  ASSERT_TRUE(s.tracker.branch_tree().find(provisional(2))->non_manoeuvre_updated);
   // WHEN the father takes its own plot again, and the son its own
   s.scan(6, {{600.0, 0.0}, {600.0, 450.0}});
   // THEN the son leaves the tree as father 2 with its own number (rule 5, §2.3 (1)) and both
@@ -247,6 +277,8 @@ TEST(BranchTracker, SonWithANonManoeuvreUpdateBecomesAnIndependentFather) {
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1, 2}));
   EXPECT_NEAR(s.track(1)->position.y(), 0.0, 30.0);
   EXPECT_NEAR(s.track(2)->position.y(), 450.0, 30.0);
+  // (a confirmed father: numbered 2, the next number)
+  ASSERT_NE(s.tracker.branch_tree().find(2), nullptr);
   EXPECT_EQ(s.tracker.branch_tree().find(2)->type, BranchType::kFather);
   EXPECT_EQ(s.live_branches(), 0);
 }
@@ -262,10 +294,10 @@ TEST(BranchTracker, SonManoeuvrePairStartsAGrandsonThatReplacesTheFather) {
   // (x = 300 at t = 3), so its velocity is (100, 50) m/s
   EXPECT_EQ(s.events("branch_created"),
             (std::vector<std::string>{"1: grandson 3 of son 2 from plot 501"}));
-  const BranchNode* grandson = s.tracker.branch_tree().find(3);
+  const BranchNode* grandson = s.tracker.branch_tree().find(provisional(3));
   ASSERT_NE(grandson, nullptr);
   EXPECT_EQ(grandson->type, BranchType::kGrandson);
-  EXPECT_EQ(grandson->parent, 2);
+  EXPECT_EQ(shown(grandson->parent), 2);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   // WHEN the grandson's next plot falls in its manoeuvre gate
   s.scan(6, {{600.0, 150.0}});
@@ -286,7 +318,7 @@ TEST(BranchTracker, GrandsonIsUpdatedThroughItsManoeuvreGate) {
   s.start();
   s.scan(4, {{400.0, 150.0}});
   s.scan(5, {{500.0, 100.0}});
-  ASSERT_TRUE(s.tracker.branch_tree().contains(3));
+  ASSERT_TRUE(s.tracker.branch_tree().contains(provisional(3)));
   // WHEN a plot lies exactly on its prediction
   s.scan(6, {{600.0, 150.0}});
   // THEN its association is a manoeuvre one: the grandson was updated (it replaced the
@@ -412,8 +444,8 @@ TEST(BranchTracker, FatherSuspendedByItsUpdateStartsSonsFromItsLikelyPlots) {
     double father = -1.0, son = -2.0;
     for (const Association& a : s.frame.associations) {
       if (a.plot != plot) continue;
-      if (a.track == 1) father = a.probability;
-      if (a.track == 2 || a.track == 3) son = a.probability;
+      if (shown(a.track) == 1) father = a.probability;
+      if (shown(a.track) == 2 || shown(a.track) == 3) son = a.probability;
     }
     EXPECT_DOUBLE_EQ(son, father) << "plot " << plot;
   }
@@ -462,24 +494,25 @@ TEST(BranchTracker, SonUpdatedWhenItsSiblingWinsBecomesATrackOfItsOwn) {
   // (both plots lie in both sons' gates: a son starts wide)
   s.scan(5, {{500.0, 60.0}, {500.0, -110.0}});
   // THEN both sons are confirmed in this scan; the likelier (son 2) replaces the father under
-  // number 1 and son 3, updated in the same scan, becomes a track of its own (§2.3 (2))
-  // instead of being deleted as a son without a non-manoeuvre update
+  // number 1 and son 3, updated in the same scan, becomes a track of its own (§2.3 (2)),
+  // numbered 2 (the next number), instead of being deleted as a son without a non-manoeuvre
+  // update
   EXPECT_EQ(s.events("branch_promoted"),
             (std::vector<std::string>{
                 "1: son 2 of track 1 replaces track 1: confirmed with plot 501 (rule 10)"}));
   EXPECT_EQ(s.events("initiated"),
             (std::vector<std::string>{
-                "3: independent son 3 of track 1: confirmed with plot 501 (rule 10)"}));
+                "2: independent son 3 of track 1: confirmed with plot 501 (rule 10)"}));
   EXPECT_TRUE(s.events("branch_pruned").empty());
   EXPECT_EQ(s.live_branches(), 0);
-  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1, 3}));
+  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1, 2}));
   EXPECT_NEAR(s.track(1)->position.y(), 60.0, 20.0);
-  EXPECT_NEAR(s.track(3)->position.y(), -110.0, 20.0);
+  EXPECT_NEAR(s.track(2)->position.y(), -110.0, 20.0);
   // AND both keep their numbers on their targets
   s.scan(6, {{600.0, 90.0}, {600.0, -190.0}});
-  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1, 3}));
+  ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1, 2}));
   EXPECT_NEAR(s.track(1)->position.y(), 90.0, 20.0);
-  EXPECT_NEAR(s.track(3)->position.y(), -190.0, 30.0);
+  EXPECT_NEAR(s.track(2)->position.y(), -190.0, 30.0);
 }
 
 TEST(BranchTracker, AnotherTracksLikeliestPlotMakesNoAmbiguity) {
@@ -583,9 +616,10 @@ TEST(BranchTracker, ChainOutsideTheManoeuvreGateOfASuspendedFatherIsANewTrack) {
   EXPECT_TRUE(s.events("branch_created").empty());
   EXPECT_EQ(s.events("initiated"), (std::vector<std::string>{"2: from plots 501 601 801"}));
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{2}));
-  // AND track 2, confirmed far from the father's manoeuvre gate, keeps its own number
+  // AND track 2, confirmed far from the father's manoeuvre gate, is numbered 2 (the next
+  // number)
   s.scan(9, {{900.0, 1000.0}});
-  EXPECT_EQ(s.events("confirmed"), (std::vector<std::string>{"2: "}));
+  EXPECT_EQ(s.events("confirmed"), (std::vector<std::string>{"2: tentative 2"}));
   EXPECT_TRUE(s.events("branch_promoted").empty());
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{2}));
 }
@@ -623,22 +657,24 @@ TEST(BranchTracker, NewTrackConfirmedInTheManoeuvreGateOfASuspendedFatherTakesIt
 
 TEST(BranchTracker, TwoNewTracksConfirmedInOneSuspendedFathersGateNearestTakesItsNumber) {
   // GIVEN track 1 suspended by a miss at t = 4, and two plot chains closing on its line
-  // from either side, outside its manoeuvre gate until t = 7: tracks 2 and 3
+  // from either side, outside its manoeuvre gate until t = 7: tentative tracks 2 and 3 (in
+  // the order of their last plots: same time and x, south first)
   Script s(suspending_profile());
   s.suspend_father();
   s.scan(5, {{500.0, 1000.0}, {500.0, -1000.0}});
   s.scan(6, {{600.0, 700.0}, {600.0, -700.0}});
   s.scan(7, {{700.0, 400.0}, {700.0, -400.0}});
   ASSERT_EQ(s.events("initiated"),
-            (std::vector<std::string>{"2: from plots 501 601 701", "3: from plots 502 602 702"}));
-  // WHEN both are confirmed in the same scan inside the father's manoeuvre gate, track 3's
+            (std::vector<std::string>{"2: from plots 502 602 702", "3: from plots 501 601 701"}));
+  // WHEN both are confirmed in the same scan inside the father's manoeuvre gate, track 2's
   // plot nearer the father's prediction (800, 0)
   s.scan(8, {{800.0, 120.0}, {800.0, -60.0}});
-  // THEN only track 3 replaces the father, under number 1; track 2 is confirmed as itself
+  // THEN only track 2 replaces the father, under number 1; track 3 is confirmed as itself,
+  // numbered 2 (the next number)
   EXPECT_EQ(s.events("branch_promoted"),
-            (std::vector<std::string>{"1: son 3 of track 1 replaces track 1: track 3 confirmed "
+            (std::vector<std::string>{"1: son 2 of track 1 replaces track 1: track 2 confirmed "
                                       "in its manoeuvre gate (§3.3)"}));
-  EXPECT_EQ(s.events("confirmed"), (std::vector<std::string>{"2: "}));
+  EXPECT_EQ(s.events("confirmed"), (std::vector<std::string>{"2: tentative 3"}));
   std::vector<std::int64_t> reported = s.reported();
   std::sort(reported.begin(), reported.end());
   ASSERT_EQ(reported, (std::vector<std::int64_t>{1, 2}));
@@ -989,7 +1025,7 @@ TEST(BranchTracker, DetectabilityChainCountsMaskedMissesOnlyInAClutterArea) {
     s.split_coast_son();
     Run r;
     for (const PointTrack& t : s.tracker.tracks()) {
-      if (t.id == 2) r.detectable = t.life.detectable;
+      if (shown(t.id) == 2) r.detectable = t.life.detectable;
     }
     const double before = s.support(2);
     // WHEN at t = 7 the father takes another false plot, left of its line, and the son misses
@@ -1037,7 +1073,7 @@ TEST(BranchTracker, ConfirmedSonWaitsUntilItsSupportPassesItsFathers) {
   EXPECT_TRUE(s.associated(2, 501));
   const auto& tracks = s.tracker.tracks();
   const auto son =
-      std::find_if(tracks.begin(), tracks.end(), [](const PointTrack& t) { return t.id == 2; });
+      std::find_if(tracks.begin(), tracks.end(), [](const PointTrack& t) { return shown(t.id) == 2; });
   ASSERT_NE(son, tracks.end());
   EXPECT_EQ(son->life.status, TrackStatus::kConfirmed);
   EXPECT_LT(s.support(2), s.support(1));

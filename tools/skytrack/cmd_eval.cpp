@@ -35,6 +35,7 @@ struct EvalOptions {
   double cutoff = metrics::ScenarioEvaluationConfig{}.cutoff;
   double order = metrics::ScenarioEvaluationConfig{}.order;
   bool json = false;
+  bool hold = false;
 };
 
 /// Error sink that prints the first few rejected lines of a file and counts the rest.
@@ -184,12 +185,14 @@ struct RunCounts {
 
 /// Merges the track frames at each truth time. Track frames arrive in time order (several
 /// sensors may share a time): those before the truth time have no truth and are counted,
-/// those at it are merged, the first later one is kept pending.
+/// those at it are merged, the first later one is kept pending. With `hold`, each truth time
+/// is scored against every sensor's latest frame at or before it instead, its tracks moved
+/// on by their velocity to the truth time (outputs stamped at sector or block times).
 class TrackFrameMatcher {
  public:
   using Source = std::function<std::optional<TrackFrame>()>;
-  TrackFrameMatcher(Source source, RunCounts& counts)
-      : source_(std::move(source)), counts_(counts) {
+  TrackFrameMatcher(Source source, RunCounts& counts, bool hold)
+      : source_(std::move(source)), counts_(counts), hold_(hold) {
     advance();
   }
 
@@ -203,6 +206,7 @@ class TrackFrameMatcher {
     merged_.time = time;
     merged_time_ = time;
     merged_any_ = false;
+    if (hold_) return held_at(time);
     while (pending_ && pending_->time < time - kTimeTolerance) orphan();
     while (pending_ && std::abs(pending_->time - time) <= kTimeTolerance) {
       merged_.tracks.insert(merged_.tracks.end(), pending_->tracks.begin(), pending_->tracks.end());
@@ -218,6 +222,21 @@ class TrackFrameMatcher {
   }
 
  private:
+  const TrackFrame* held_at(double time) {
+    while (pending_ && pending_->time <= time + kTimeTolerance) {
+      const std::uint32_t sensor = pending_->sensor;
+      latest_[sensor] = std::move(*pending_);
+      advance();
+    }
+    for (const auto& [sensor, frame] : latest_) {
+      for (TrackReport track : frame.tracks) {
+        track.position += track.velocity * (time - frame.time);
+        merged_.tracks.push_back(std::move(track));
+      }
+      merged_any_ = true;
+    }
+    return merged_any_ ? &merged_ : nullptr;
+  }
   void advance() {
     pending_ = source_();
     if (pending_) ++counts_.track_frames;
@@ -230,7 +249,9 @@ class TrackFrameMatcher {
 
   Source source_;
   RunCounts& counts_;
+  bool hold_ = false;
   std::optional<TrackFrame> pending_;
+  std::map<std::uint32_t, TrackFrame> latest_;  // hold: each sensor's latest frame
   TrackFrame merged_;
   std::optional<double> merged_time_;
   bool merged_any_ = false;
@@ -398,7 +419,7 @@ int run_eval(const EvalOptions& options) {
   std::optional<PlotCollector> plot;
   if (!options.plot_path.empty()) plot.emplace();
 
-  TrackFrameMatcher matcher(source, counts);
+  TrackFrameMatcher matcher(source, counts, options.hold);
   while (std::optional<TruthFrame> truth = truth_reader->next()) {
     const TrackFrame* tracks = matcher.at(truth->time);
     const metrics::ScanRecord& record = evaluation.add(*truth, tracks);
@@ -452,6 +473,9 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(1.0, 20.0))
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "Print one JSON object instead of a table");
+  cmd->add_flag("--hold", options->hold,
+                "Score each truth time against the latest track frame at or before it, tracks "
+                "moved on by their velocity (outputs of sector or block feeds)");
   cmd->add_option("--plot", options->plot_path, "Write an SVG picture of the run");
   cmd->add_option("--per-scan", options->per_scan_path,
                   "Write per-scan metrics (JSON Lines if it ends in .jsonl, else CSV)");

@@ -17,6 +17,8 @@ struct LookSources {
   std::span<const PlotScan> batches;  // headers (plots empty) of earlier batches
   std::span<const int> batch_of;      // per plot of the look: index into batches, -1: its own
   std::span<const double> sweep;      // per plot: the antenna's sweep when it was seen [rad]
+  double sweep_to = 0.0;              // the sweep at the look's end [rad]
+  bool whole = false;                 // a batch that swept a revolution by itself
 };
 
 /// Where a track or a candidate chain looks for its next plot: a sphere in the tracking

@@ -32,10 +32,11 @@ struct PlotMeasurement {
   MeasVec z;
   double time = 0.0;  // [s] plot_time(plot, scan)
   std::int64_t plot_id = 0;
-  std::uint64_t scan = 0;  // the batch the plot arrived in
+  std::uint32_t sensor = 0;  // the sensor that saw it
+  std::uint64_t scan = 0;    // the batch the plot arrived in
   // The antenna's sweep when the plot was seen [rad]: a rotating antenna's cumulative
-  // azimuth, or 2 pi per look of a snapshot sensor; (b - a) / 2 pi counts the looks between
-  // two plots (set by the tracker).
+  // azimuth, or 2 pi per look of a snapshot sensor; (b - a) / 2 pi counts one sensor's
+  // looks between two of its plots (set by the tracker).
   double sweep = 0.0;
 };
 

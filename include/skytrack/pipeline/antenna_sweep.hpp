@@ -19,15 +19,27 @@ double body_azimuth(const Plot& plot, const PlatformState& platform);
 
 class AntennaSweep {
  public:
+  enum class Kind { kUndecided, kSnapshot, kRotating };
+
   explicit AntennaSweep(const config::AntennaSpec& spec);
 
-  /// Reads one batch (plots in any order): learns the rate from consecutive plots while it is
-  /// unknown, and once the antenna is known to rotate gives each plot its sweep in `sweeps`
-  /// (batch order). Returns false while the sensor is not (yet) known to rotate: then the
-  /// batch is a snapshot and `sweeps` is left empty.
-  bool assign(const PlotScan& scan, std::vector<double>& sweeps);
+  /// Reads one batch (plots in any order): learns the rotation from consecutive plots while
+  /// it is unknown (and refines the rate afterwards). A batch whose plots carry no time of
+  /// their own makes the sensor a snapshot sensor; so do pairs of plots that never agree on
+  /// a rate.
+  Kind read(const PlotScan& scan);
+  /// Gives up learning: the sensor is a snapshot sensor.
+  void give_up();
+  Kind kind() const { return kind_; }
 
-  bool rotating() const { return rate_ > 0.0 && sense_ != 0; }
+  /// Each plot's sweep (batch order), for a rotating antenna's batches in arrival order. The
+  /// first plot placed starts a revolution after `base` (the sweep the sensor's looks had
+  /// reached before it was known to rotate).
+  void place(const PlotScan& scan, double base, std::vector<double>& sweeps);
+  /// Consecutive-plot rate samples read so far (learning progresses while it grows).
+  std::size_t samples() const { return samples_; }
+
+  bool rotating() const { return kind_ == Kind::kRotating; }
   double rate() const { return rate_; }  // [rad/s], > 0 once rotating
   double period() const;                 // [s]
   int sense() const { return sense_; }   // +1 clockwise, -1 counterclockwise, 0 unknown
@@ -49,10 +61,14 @@ class AntennaSweep {
   void learn(const std::vector<Sample>& ordered);
   double unwrap(double azimuth, double time) const;
 
+  void order(const PlotScan& scan);
+
   config::AntennaSpec spec_;
+  Kind kind_ = Kind::kUndecided;
   double rate_ = 0.0;  // [rad/s]
   int sense_ = 0;
   std::vector<double> rates_;   // signed rate samples [rad/s] while learning
+  std::size_t samples_ = 0;      // rate samples read in all
   std::optional<Sample> last_;  // the latest plot seen (time order)
   double latest_time_ = 0.0, latest_sweep_ = 0.0;
   bool anchored_ = false;

@@ -28,7 +28,9 @@ struct Look {
   std::vector<PlotScan> batches;  // headers of the earlier batches plots were held over from
   std::vector<int> batch_of;      // per plot: index into batches, -1 for the latest batch's
   std::vector<double> sweep;      // per plot [rad]
-  LookSources sources() const { return {batches, batch_of, sweep}; }
+  double sweep_to = 0.0;          // the cut that ends it [rad]
+  bool whole = false;             // a batch that swept a revolution by itself
+  LookSources sources() const { return {batches, batch_of, sweep, sweep_to, whole}; }
 };
 
 class LookAssembler {
@@ -46,9 +48,14 @@ class LookAssembler {
   /// until false, a batch may complete several looks.
   bool take(std::span<const AzimuthSpan> spans, const AntennaSweep& antenna, Look& look);
 
+  /// Every held plot as one look at all directions, up to `reached`: for a batch that swept
+  /// three quarters of a revolution or more by itself (a feed that delivers revolutions).
+  void take_all(Look& look);
+
   /// The previous cut: spans are placed after it.
   double from() const { return from_; }
   double reached() const { return reached_; }
+  bool started() const { return started_; }
   std::size_t held() const { return held_.size(); }
 
  private:
@@ -58,6 +65,8 @@ class LookAssembler {
     std::size_t batch = 0;  // index into headers_
   };
   double cut(std::span<const AzimuthSpan> spans, const AntennaSweep& antenna);
+  /// Moves the held plots up to sweep c into `look` (its header the latest batch's).
+  void release(double c, Look& look);
 
   std::vector<Held> held_;
   std::vector<PlotScan> headers_;  // batches with held plots, oldest first; plots empty

@@ -13,8 +13,7 @@
 #include "skytrack/core/expected.hpp"
 #include "skytrack/core/plot.hpp"
 #include "skytrack/core/track_report.hpp"
-#include "skytrack/pipeline/antenna_sweep.hpp"
-#include "skytrack/pipeline/look_assembler.hpp"
+#include "skytrack/pipeline/sensor_feed.hpp"
 #include "skytrack/tracking/point_tracker.hpp"
 
 namespace skytrack {
@@ -50,25 +49,15 @@ class Pipeline {
   std::optional<std::string> check_order(const PlotScan& scan) const;
   /// The batch itself when all its plots are usable, else a copy without the bad ones.
   const PlotScan& without_invalid_plots(const PlotScan& scan);
-  struct SensorState;
-  /// Tracks a rotating antenna's batch through the looks it completes.
-  void track_rotating(const PlotScan& batch, SensorState& sensor);
 
   config::TrackingProfile profile_;
   std::optional<PointTracker> tracker_;  // created with the first batch (its dimension)
   struct SensorState {
     std::uint64_t scan = 0;  // the latest batch's number and time
     double time = 0.0;
-    AntennaSweep antenna;
-    LookAssembler looks;
+    SensorFeed feed;
   };
   std::map<std::uint32_t, SensorState> sensors_;
-  // Workspaces (reused).
-  std::vector<double> sweeps_;
-  std::vector<SearchRegion> regions_;
-  std::vector<AzimuthSpan> spans_;
-  Look look_;
-  TrackFrame look_frame_;
   PipelineCounters counters_;
   PlotScan clean_;  // a batch without its invalid plots, when it had some (reused)
   ScanResult result_;

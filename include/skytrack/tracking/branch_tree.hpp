@@ -85,6 +85,8 @@ class BranchTree {
   /// Deletes a node and everything below it (a branch that died, a father deleted, a cap).
   /// Emits kPruned for every branch removed (not for a father).
   void remove(std::int64_t id, std::vector<BranchChange>& out);
+  /// Gives a father another number (its sons follow).
+  void rename(std::int64_t id, std::int64_t number);
 
  private:
   void erase_subtree(std::int64_t id, std::int64_t father, std::vector<BranchChange>& out);

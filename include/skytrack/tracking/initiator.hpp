@@ -35,9 +35,15 @@ class Initiator {
   /// Tells whether a batch looked at a position (a sector batch covers part of the sky).
   using Coverage = std::function<bool(const Eigen::Vector3d&)>;
 
-  /// One batch of plots that no track explains, taken at `time`. Seeds and chains age by the
-  /// batches that cover them ("looks"), so a revolution reported in sectors counts once.
-  /// Returns the chains completed by this batch.
+  /// One batch of plots of `sensor` that no track explains, taken at `time`, its sweep ending
+  /// at `sweep` (the antenna's, PlotMeasurement::sweep). Seeds and chains age by the batches
+  /// that cover them ("looks"), at most once per half revolution of their sensor's sweep, so
+  /// a revolution reported in sectors counts once. Returns the chains completed by this batch.
+  const std::vector<Initiation>& step(std::uint64_t batch, double time, std::uint32_t sensor,
+                                      double sweep, const std::vector<PlotMeasurement>& plots,
+                                      const Coverage& covered);
+  /// The same for a snapshot sensor, whose batches are a look at everything (the plots'
+  /// sweeps are set to one revolution per batch).
   const std::vector<Initiation>& step(std::uint64_t batch, double time,
                                       const std::vector<PlotMeasurement>& plots,
                                       const Coverage& covered);
@@ -53,7 +59,8 @@ class Initiator {
     PlotMeasurement plot;
     Eigen::Vector3d position;
     std::uint64_t batch = 0;
-    int looks = 0;  // batches that covered it since it was made
+    int looks = 0;        // batches that covered it since it was made
+    double looked = 0.0;  // the sweep when it was last seen or looked at
   };
   struct Chain {
     std::vector<PlotMeasurement> plots;
@@ -61,7 +68,8 @@ class Initiator {
     Eigen::Vector3d velocity;
     double time = 0.0;  // of the last plot
     std::uint64_t last_batch = 0;
-    int looks = 0;  // looks spanned, from the first plot's on, inclusive
+    int looks = 0;        // looks spanned, from the first plot's on, inclusive
+    double looked = 0.0;  // the sweep when it last took a plot or was looked at
   };
   struct Extension {  // a plot in a chain's gate, at `distance` from its prediction
     double distance = 0.0;
@@ -78,6 +86,7 @@ class Initiator {
   std::vector<Seed> seeds_;
   std::vector<Chain> chains_;
   std::vector<Initiation> completed_;
+  std::vector<PlotMeasurement> snapshot_plots_;
   struct SeedGroup {  // the seeds of one batch: seeds_[begin, end)
     std::size_t begin = 0, end = 0;
     double oldest = 0.0;     // earliest plot time among them

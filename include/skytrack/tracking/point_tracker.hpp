@@ -19,10 +19,12 @@
 #include <chrono>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "skytrack/association/cluster_builder.hpp"
@@ -67,6 +69,26 @@ struct PointTrack {
   ImmEstimate estimate;  // posterior at estimate.time
   double quality = 0.0;  // running mean of the detection probability, in [0, 1]
 
+  // Per sensor, the antenna's sweep when it last looked at the track or the track took one
+  // of its plots: a look within half a revolution of it is not another look (a rotating
+  // antenna's sector looks).
+  std::vector<std::pair<std::uint32_t, double>> looked;
+  double looked_by(std::uint32_t sensor) const {
+    for (const auto& [s, sweep] : looked) {
+      if (s == sensor) return sweep;
+    }
+    return -std::numeric_limits<double>::infinity();
+  }
+  void set_looked(std::uint32_t sensor, double sweep) {
+    for (auto& [s, last] : looked) {
+      if (s == sensor) {
+        last = sweep;
+        return;
+      }
+    }
+    looked.emplace_back(sensor, sweep);
+  }
+
   // Branch tracking (paper 003); fathers only while branching is off.
   BranchType branch = BranchType::kFather;    // only fathers are reported
   std::optional<PlotMeasurement> first_plot;  // a branch's start plot (§1 (6)-(7))
@@ -98,6 +120,10 @@ struct PointTrack {
   // plots of its own.
   bool coast_son = false;
 };
+
+/// Provisional numbers (tentative tracks, branches) start here, clear of any number a
+/// confirmed track is given.
+inline constexpr std::int64_t kProvisionalNumber = std::int64_t{1} << 40;
 
 class PointTracker {
  public:
@@ -292,6 +318,9 @@ class PointTracker {
              TrackFrame& frame);
   int slot(std::int64_t number) const;
   void report_tracks(double time, ScanReport& report, TrackFrame& frame);
+  /// Gives the fathers confirmed with a provisional number their numbers, in the order of
+  /// their latest plots; this frame names them by it.
+  void number_confirmed(TrackFrame& frame);
   /// Clutter density for plot `index` of this batch (-1: a plot of an earlier batch).
   double clutter_density(const PlotMeasurement& plot, int index) const;
   void estimate_clutter_density();
@@ -319,13 +348,20 @@ class PointTracker {
   double region_accel_ = 0.0;                     // [m/s^2]
   double max_turn_rate_ = 0.0;                    // [rad/s]
   std::uint32_t sensor_ = 0;                      // this look's sensor
-  bool windowed_ = false;  // its density is estimated over the sensor's last revolution
+  bool windowed_ = false;    // its density is estimated over the sensor's last revolution
+  double look_sweep_ = 0.0;  // the sweep at this look's end [rad]
+  std::vector<std::uint8_t> took_candidates_;  // per track: a plot of this look in its gate
   ClusterBuilder clusters_;
   JpdaSolver jpda_;
   JpdaSolver jpda_manoeuvre_;  // the manoeuvre kinds' clusters (branching)
   GnnAssociator gnn_;
   std::vector<PointTrack> tracks_;
-  std::int64_t next_id_ = 1;
+  // A track's number is given when it is confirmed, in the order of the plots that confirmed
+  // it, so neither tentative tracks of clutter nor the grouping of plots into looks shifts
+  // the numbers; until then a track (and a branch, until it replaces its father) carries a
+  // provisional number from kProvisionalNumber on.
+  std::int64_t next_number_ = 1;
+  std::int64_t next_provisional_ = kProvisionalNumber;
   std::uint64_t batches_ = 0;
   double gate_threshold_[kMaxMeasurementDim + 1] = {};  // chi-square quantile per dims
   // per dims: the gate's volume times N(nu; 0, S)'s peak, (g/2)^(d/2) / Gamma(d/2 + 1)

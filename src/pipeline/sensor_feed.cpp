@@ -1,0 +1,151 @@
+#include "skytrack/pipeline/sensor_feed.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "skytrack/geometry/frames.hpp"
+
+namespace skytrack {
+namespace {
+
+// While the antenna is learnt, at most this many batches or seconds of plots wait; then it
+// is taken for a snapshot sensor.
+constexpr std::size_t kMaxWaiting = 256;
+constexpr double kMaxWaitTime = 60.0;  // [s]
+
+/// Adds a later look's counts to a batch's report; the track counts are the later look's.
+void add_look(ScanReport& total, const ScanReport& look) {
+  total.plots += look.plots;
+  total.plots_invalid += look.plots_invalid;
+  total.plots_rejected_clutter += look.plots_rejected_clutter;
+  total.tentative = look.tentative;
+  total.confirmed = look.confirmed;
+  total.coasting = look.coasting;
+  total.initiated += look.initiated;
+  total.deleted += look.deleted;
+  total.clusters += look.clusters;
+  total.largest_cluster = std::max(total.largest_cluster, look.largest_cluster);
+  total.approximated_clusters += look.approximated_clusters;
+  total.numeric_failures += look.numeric_failures;
+  total.branches = look.branches;
+  total.branches_created += look.branches_created;
+  total.branches_promoted += look.branches_promoted;
+  total.branches_pruned += look.branches_pruned;
+  total.predict += look.predict;
+  total.associate += look.associate;
+  total.manage += look.manage;
+}
+
+}  // namespace
+
+void SensorFeed::look(const PlotScan& scan, const LookSources* sources, PointTracker& tracker) {
+  if (!looked_) {
+    tracker.process(scan, *frame_, *report_, sources);
+    looked_ = true;
+    return;
+  }
+  // A batch that completes several looks gives one frame: every look's decisions (plots of
+  // earlier batches named by their batch), the tracks after the last, and the tracks deleted
+  // on the way.
+  ScanReport next;
+  tracker.process(scan, look_frame_, next, sources);
+  for (TrackReport& track : frame_->tracks) {
+    if (track.status == TrackStatus::kDeleted) look_frame_.tracks.push_back(std::move(track));
+  }
+  frame_->tracks.swap(look_frame_.tracks);
+  for (Association a : look_frame_.associations) {
+    if (!a.scan && look_frame_.scan != frame_->scan) a.scan = look_frame_.scan;
+    frame_->associations.push_back(a);
+  }
+  frame_->events.insert(frame_->events.end(), look_frame_.events.begin(), look_frame_.events.end());
+  add_look(*report_, next);
+}
+
+void SensorFeed::snapshot(const PlotScan& scan, PointTracker& tracker) {
+  clock_ += 2.0 * std::numbers::pi;
+  own_.assign(scan.plots.size(), -1);
+  sweeps_.assign(scan.plots.size(), clock_);
+  const LookSources sources{{}, own_, sweeps_, clock_, true};
+  look(scan, &sources, tracker);
+}
+
+void SensorFeed::feed(const PlotScan& batch, PointTracker& tracker, TrackFrame& frame,
+                      ScanReport& report) {
+  frame_ = &frame;
+  report_ = &report;
+  looked_ = false;
+  frame.scan = batch.scan;  // the first look's frame is this batch's
+  const std::size_t samples = antenna_.samples();
+  AntennaSweep::Kind kind = antenna_.read(batch);
+  if (kind == AntennaSweep::Kind::kUndecided) {
+    // While the batches teach the rotation (their plots' times and azimuths advance
+    // together), they wait, so that a sector feed's first batches are not taken for looks at
+    // everything; a batch that teaches nothing (one plot a revolution) is tracked as it is.
+    const bool learning = antenna_.samples() > samples;
+    if (learning && waiting_.size() < kMaxWaiting &&
+        (waiting_.empty() || batch.time - waiting_.front().time < kMaxWaitTime)) {
+      waiting_.push_back(batch);
+      tracker.report_only(batch, frame, report);
+      return;
+    }
+    if (learning) antenna_.give_up();
+    kind = antenna_.kind();
+  }
+  if (kind != AntennaSweep::Kind::kRotating) {
+    for (const PlotScan& waited : waiting_) snapshot(waited, tracker);
+    waiting_.clear();
+    snapshot(batch, tracker);
+  } else {
+    for (const PlotScan& waited : waiting_) feed_rotating(waited, tracker);
+    waiting_.clear();
+    feed_rotating(batch, tracker);
+    if (!looked_) tracker.report_only(batch, frame, report);
+  }
+  // The frame belongs to the batch that arrived.
+  frame.scan = batch.scan;
+  frame.time = batch.time;
+}
+
+void SensorFeed::feed_rotating(const PlotScan& batch, PointTracker& tracker) {
+  antenna_.place(batch, clock_, sweeps_);
+  // How far the beam is known to have swept: to the latest plot, to the batch's time when
+  // that is later (a batch stamped when its sweep ended), to the end of its coverage.
+  double time = batch.time;
+  for (const Plot& plot : batch.plots) time = std::max(time, plot_time(plot, batch));
+  double reached = std::max(antenna_.latest(), antenna_.sweep_at(batch.time));
+  if (batch.coverage) {
+    const double end = antenna_.sense() > 0 ? batch.coverage->to : batch.coverage->from;
+    reached =
+        std::max(reached, antenna_.sweep_of(end, antenna_.sweep_at(batch.time) - std::numbers::pi));
+  }
+  // A batch that swept three quarters of a revolution or more by itself comes from a feed that
+  // delivers revolutions: it is one look at everything, as it came (and the plots still held go
+  // with it).
+  const bool revolution = looks_.started() && reached - looks_.reached() >= 1.5 * std::numbers::pi;
+  looks_.add(batch, sweeps_, reached);
+  if (revolution) {
+    looks_.take_all(look_);
+    const LookSources sources = look_.sources();
+    look(look_.scan, &sources, tracker);
+    clock_ = std::max(clock_, look_.sweep_to);
+    return;
+  }
+  for (;;) {
+    // Each search region as the beam sees it, from the tracks as they are now.
+    tracker.search_regions(batch, time, regions_);
+    spans_.clear();
+    for (const SearchRegion& region : regions_) {
+      const PolarPoint polar = enu_to_polar(region.centre, batch.platform);
+      const double half =
+          region.radius < polar.range ? std::asin(region.radius / polar.range) : std::numbers::pi;
+      spans_.push_back({polar.azimuth, half});
+    }
+    if (!looks_.take(spans_, antenna_, look_)) break;
+    const LookSources sources = look_.sources();
+    look(look_.scan, &sources, tracker);
+    clock_ = std::max(clock_, look_.sweep_to);
+  }
+}
+
+}  // namespace skytrack
