@@ -131,6 +131,14 @@ void Batcher::release(SensorState& s) {
 
 void Batcher::close(SensorState& s, double time, std::optional<AzimuthSector> coverage, bool hold) {
   release(s);
+  // A batch needs a time: a sector message without one, before any plot or batch of its
+  // sensor, has nothing to time it by (found by fuzzing).
+  if (!std::isfinite(time)) time = s.latest_plot_time();
+  if (!std::isfinite(time)) {
+    s.plots.clear();
+    s.unwrapped.clear();
+    return;
+  }
   PlotScan scan;
   scan.sensor = s.sensor;
   scan.scan = s.next_scan++;
@@ -267,7 +275,8 @@ void Batcher::add(const ServiceMessage& message) {
   }
   s.markers = true;
   s.marker_azimuth = *message.azimuth;
-  s.reference = time;
+  s.reference.reset();  // the marker wait counts from the next plot
+  if (std::isfinite(time)) s.reference = time;
 }
 
 void Batcher::finish() {

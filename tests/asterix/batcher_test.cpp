@@ -171,3 +171,29 @@ TEST(Batcher, ParsesTheBatchOption) {
 
 }  // namespace
 }  // namespace skytrack::asterix
+
+namespace skytrack::asterix {
+namespace {
+
+TEST(Batcher, UntimedSectorMessagesBeforeAnyPlotCloseNothing) {
+  // Found by fuzzing: such a batch had no time to give (it was -inf).
+  Scans scans;
+  Batcher b({}, scans.sink());
+  ServiceMessage untimed = sector(0.0, 0.0);
+  untimed.time.reset();
+  b.add(untimed);
+  untimed.azimuth = 1.0;
+  untimed.kind = ServiceKind::kSectorCrossing;
+  b.add(untimed);
+  b.add(plot(5.0, 1.5));
+  b.add(sector(6.0, 2.0));
+  b.finish();
+  ASSERT_EQ(scans.all.size(), 1u);
+  EXPECT_DOUBLE_EQ(scans.all[0].time, 6.0);
+  EXPECT_EQ(scans.all[0].scan, 0u);
+  ASSERT_TRUE(scans.all[0].coverage);  // still by sector, from the last message's azimuth
+  EXPECT_DOUBLE_EQ(scans.all[0].coverage->from, 1.0);
+}
+
+}  // namespace
+}  // namespace skytrack::asterix
