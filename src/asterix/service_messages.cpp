@@ -1,5 +1,5 @@
 // CAT002 and CAT034 monoradar service messages (EUROCONTROL ASTERIX Part 2b, Category 002
-// ed. 1.0; Category 034 ed. 1.27): north markers and sector crossings with their time of day
+// ed. 1.0; Category 034 ed. 1.2x): north markers and sector crossings with their time of day
 // (1/128 s), sector azimuth (360/2^8 deg), antenna rotation period (1/128 s) and, in CAT034,
 // the radar's position (I034/120: height in m, latitude and longitude 180/2^23 deg).
 #include "category_decoders.hpp"

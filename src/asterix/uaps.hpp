@@ -1,7 +1,7 @@
 #pragma once
 // User Application Profiles of the categories the decoder reads, and the FRNs of the items it
 // interprets. Item formats and sizes from the EUROCONTROL category specifications: CAT001
-// ed. 1.1 (plot and track UAPs), CAT002 ed. 1.0, CAT034 ed. 1.27, CAT048 ed. 1.21+.
+// ed. 1.1 (plot and track UAPs), CAT002 ed. 1.0, CAT034 ed. 1.2x, CAT048 ed. 1.2x.
 #include "record_walker.hpp"
 
 namespace skytrack::asterix::detail {

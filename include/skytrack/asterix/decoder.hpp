@@ -1,7 +1,7 @@
 #pragma once
 // ASTERIX decoder for monoradar data: CAT048 and CAT001 target reports (plots), CAT002 and
 // CAT034 service messages, written to the EUROCONTROL category specifications (CAT001 ed. 1.1,
-// CAT002 ed. 1.0, CAT034 ed. 1.27, CAT048 ed. 1.2x). Other categories, and items that are not
+// CAT002 ed. 1.0, CAT034 ed. 1.2x, CAT048 ed. 1.2x). Other categories, and items that are not
 // interpreted, are skipped by their length and counted. Bad input (truncated blocks, a LEN past
 // the end, an endless FSPEC, repetitions past the end, values out of range) is reported with
 // its origin, counted by reason and skipped; the rest of the datagram is decoded where the
