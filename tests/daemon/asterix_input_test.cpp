@@ -137,6 +137,54 @@ TEST(UdpInput, DecodesAndBatchesDatagramsOnLoopback) {
   EXPECT_EQ((*input)->datagrams(), 4u);
 }
 
+TEST(UdpInput, JoinsAMulticastGroupOnLoopback) {
+  // GIVEN an input on a multicast group joined on 127.0.0.1 (the default interface)
+  daemon::AsterixInput settings;
+  settings.address = "239.255.86.1";
+  settings.port = 0;
+  settings.batch = "block:1";
+  auto input = daemon::UdpInput::open(settings);
+  if (!input) GTEST_SKIP() << "no multicast on loopback here: " << input.error().message;
+  std::mutex mutex;
+  std::size_t scans = 0;
+  (*input)->start(
+      [&](PlotScan&&) {
+        std::lock_guard lock(mutex);
+        ++scans;
+      },
+      [](const asterix::DecodeError&) {}, [](asterix::DropReason, std::uint64_t) {});
+  // WHEN a plot is sent to the group through the loopback interface only (TTL 0: it cannot
+  // leave this machine)
+  const int sender = ::socket(AF_INET, SOCK_DGRAM, 0);
+  in_addr loopback{};
+  loopback.s_addr = htonl(INADDR_LOOPBACK);
+  const int ttl = 0;
+  ASSERT_EQ(::setsockopt(sender, IPPROTO_IP, IP_MULTICAST_IF, &loopback, sizeof loopback), 0);
+  ASSERT_EQ(::setsockopt(sender, IPPROTO_IP, IP_MULTICAST_TTL, &ttl, sizeof ttl), 0);
+  sockaddr_in to{};
+  to.sin_family = AF_INET;
+  to.sin_port = htons(static_cast<std::uint16_t>(port_of((*input)->endpoint())));
+  inet_pton(AF_INET, settings.address.c_str(), &to.sin_addr);
+  const std::vector<std::uint8_t> plot{48,   0, 14,   0xF0, 20,   4,    0x01,
+                                       0x00, 0, 0x20, 0x10, 0x00, 0x40, 0x00};
+  ASSERT_EQ(::sendto(sender, plot.data(), plot.size(), 0, reinterpret_cast<const sockaddr*>(&to),
+                     sizeof to),
+            static_cast<ssize_t>(plot.size()));
+  ::close(sender);
+  // THEN it is decoded and batched
+  const auto deadline = std::chrono::steady_clock::now() + 5s;
+  for (;;) {
+    {
+      std::lock_guard lock(mutex);
+      if (scans > 0 || std::chrono::steady_clock::now() > deadline) break;
+    }
+    std::this_thread::sleep_for(10ms);
+  }
+  (*input)->stop();
+  EXPECT_EQ(scans, 1u);
+  EXPECT_NE((*input)->endpoint().find("multicast, joined on 127.0.0.1"), std::string::npos);
+}
+
 std::vector<TrackFrame> read_tracks(const std::string& file) {
   std::vector<TrackFrame> frames;
   auto reader = io::TrackReader::open(file);
