@@ -153,16 +153,19 @@ void Batcher::close(SensorState& s, double time, std::optional<AzimuthSector> co
 }
 
 void Batcher::close_revolution(SensorState& s, std::optional<double> next_time) {
-  // North crossing of the least-squares line u = u0 + w t through the batch's plots.
+  // The rotation period from a least-squares line u = u0 + w t through the batch's plots, when
+  // they spread over a quarter turn at least (a few aircraft at one azimuth say nothing of it);
+  // the north crossing from the most advanced plot and the period (sent, else fitted).
   const std::size_t n = s.plots.size();
-  double tm = 0.0, um = 0.0, latest = s.last_time;
+  double tm = 0.0, um = 0.0, latest = s.last_time, u_min = 0.0, u_max = 0.0, t_max = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     tm += *s.plots[i].time;
     um += s.unwrapped[i];
     latest = std::max(latest, *s.plots[i].time);
+    if (i == 0 || s.unwrapped[i] < u_min) u_min = s.unwrapped[i];
+    if (i == 0 || s.unwrapped[i] > u_max) u_max = s.unwrapped[i], t_max = *s.plots[i].time;
   }
-  double crossing = latest;
-  if (n >= 3) {
+  if (n >= 3 && u_max - u_min >= kTwoPi / 4) {
     tm /= static_cast<double>(n);
     um /= static_cast<double>(n);
     double stt = 0.0, stu = 0.0;
@@ -175,8 +178,11 @@ void Batcher::close_revolution(SensorState& s, std::optional<double> next_time) 
     if (w > kTwoPi / 60.0 && w < kTwoPi / 0.5) {
       const double period = kTwoPi / w;
       s.fitted_period = s.fitted_period ? 0.8 * *s.fitted_period + 0.2 * period : period;
-      crossing = tm + (kTwoPi * (s.turn + 1.0) - um) / w;
     }
+  }
+  double crossing = latest;
+  if (const auto period = s.period(); period && n > 0) {
+    crossing = t_max + (kTwoPi * (s.turn + 1.0) - u_max) * *period / kTwoPi;
   }
   crossing = std::max(crossing, latest);
   for (const Plot& p : s.pending) crossing = std::min(crossing, *p.time);

@@ -278,3 +278,36 @@ TEST(RealCaptures, CanalAImportEqualsTheIndependentDecodersPlotStream) {
 
 }  // namespace
 }  // namespace skytrack::asterix::test
+
+namespace skytrack::asterix::test {
+namespace {
+
+std::vector<PlotScan> import(const std::string& path, BatchMode mode) {
+  std::vector<PlotScan> out;
+  FeedOptions options;
+  options.batch.mode = mode;
+  Feed feed(options, [&](PlotScan&& s) { out.push_back(std::move(s)); });
+  auto reader = CaptureReader::open(path);
+  if (reader) run_capture(*reader, feed);
+  return out;
+}
+
+TEST(RealCaptures, RevolutionsFittedFromThePlotsAreTheNorthMarkersRevolutions) {
+  for (const char* name : {"canalA_cat001_cat002.pcap", "bds30_cat048_cat034.pcap"}) {
+    SKIP_WITHOUT(capture(name));
+    // GIVEN the capture batched by its north markers, and by revolutions fitted from the plots
+    const auto markers = import(capture(name), BatchMode::kSector);
+    const auto fitted = import(capture(name), BatchMode::kRevolution);
+    // THEN the batches hold the same plots and end within 20 ms of the north marker
+    ASSERT_EQ(fitted.size(), markers.size()) << name;
+    for (std::size_t i = 0; i < fitted.size(); ++i) {
+      ASSERT_EQ(fitted[i].plots.size(), markers[i].plots.size()) << name << " batch " << i;
+      if (i > 0 && i + 1 < fitted.size()) {
+        EXPECT_NEAR(fitted[i].time, markers[i].time, 0.02) << name << " batch " << i;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skytrack::asterix::test
