@@ -18,6 +18,7 @@
 #include "skytrack/daemon/rate_limiter.hpp"
 #include "skytrack/daemon/scan_queue.hpp"
 #include "skytrack/daemon/status_collector.hpp"
+#include "skytrack/daemon/udp_input.hpp"
 #include "skytrack/dds/conversion.hpp"
 #include "skytrack/pipeline/pipeline.hpp"
 
@@ -66,6 +67,11 @@ struct Daemon::Impl {
 
   void receive_loop();
   void receive_batch();
+  /// Into the queue; a scan the overload policy drops is counted and logged (rate-limited).
+  void enqueue(QueuedScan item);
+  void start_udp();
+  /// The PlotBatch reader and the reception waitset (input.from: dds or both).
+  bool open_plot_reception(dds_entity_t topic);
   /// The scan in a sample, or nullopt when it is rejected (counted and logged).
   std::optional<QueuedScan> convert(const skytrack_dds_PlotBatch& batch,
                                     Clock::time_point received);
@@ -98,14 +104,17 @@ struct Daemon::Impl {
   bool pending_keeps_tracks = false;
   config::ProfileIdentity pending_identity;
 
+  std::unique_ptr<UdpInput> udp;  // input.from: asterix or both
   std::thread receiver;
   std::thread tracker;
   bool running = false;
 
+  std::mutex drop_log_mutex;  // the DDS and UDP reception threads share drop_log
   RateLimiter drop_log;
   RateLimiter bad_sample_log;  // reception thread
   RateLimiter bad_scan_log;    // tracking thread
   RateLimiter write_log;
+  RateLimiter asterix_log;  // UDP input thread
 };
 
 namespace {
@@ -156,18 +165,55 @@ void Daemon::Impl::receive_batch() {
   }
   std::stable_sort(arrivals.begin(), arrivals.end(),
                    [](const Arrival& a, const Arrival& b) { return a.written < b.written; });
-  for (Arrival& arrival : arrivals) {
-    auto dropped = queue.push(std::move(arrival.item));
-    if (!dropped) continue;
-    const std::uint64_t total = status.scan_dropped();
-    if (const auto count = drop_log.allow()) {
-      spdlog::warn(
-          "overload ({}, queue of {}): dropped sensor {} scan {}; {} dropped since last "
-          "message, {} in all",
-          to_string(config.queue.overload), queue.capacity(), dropped->scan.sensor,
-          dropped->scan.scan, *count, total);
-    }
+  for (Arrival& arrival : arrivals) enqueue(std::move(arrival.item));
+}
+
+void Daemon::Impl::enqueue(QueuedScan item) {
+  // Both inputs may push at once: the queue and the counters lock themselves.
+  auto dropped = queue.push(std::move(item));
+  if (!dropped) return;
+  const std::uint64_t total = status.scan_dropped();
+  std::lock_guard lock(drop_log_mutex);
+  if (const auto count = drop_log.allow()) {
+    spdlog::warn(
+        "overload ({}, queue of {}): dropped sensor {} scan {}; {} dropped since last "
+        "message, {} in all",
+        to_string(config.queue.overload), queue.capacity(), dropped->scan.sensor,
+        dropped->scan.scan, *count, total);
   }
+}
+
+bool Daemon::Impl::open_plot_reception(dds_entity_t topic) {
+  auto reader = session.reader(topic, plots_reader_qos(config.dds).get());
+  if (!reader) {
+    spdlog::error("{}", reader.error().message);
+    return false;
+  }
+  plots_reader = *reader;
+  waitset = dds_create_waitset(session.participant());
+  readable = dds_create_readcondition(plots_reader, DDS_ANY_STATE);
+  stop_guard = dds_create_guardcondition(session.participant());
+  return waitset >= 0 && readable >= 0 && stop_guard >= 0 &&
+         dds_waitset_attach(waitset, readable, readable) == DDS_RETCODE_OK &&
+         dds_waitset_attach(waitset, stop_guard, stop_guard) == DDS_RETCODE_OK;
+}
+
+void Daemon::Impl::start_udp() {
+  // Decoding errors and dropped reports count as rejected plots, "asterix <reason>".
+  udp->start(
+      [this](PlotScan&& scan) {
+        enqueue(QueuedScan{std::move(scan), Clock::now()});
+      },
+      [this](const asterix::DecodeError& e) {
+        status.plots_rejected("asterix " + std::string(asterix::to_string(e.reason)), 1);
+        if (const auto count = asterix_log.allow()) {
+          spdlog::warn("ASTERIX input: {} ({} errors since last message)", asterix::to_string(e),
+                       *count);
+        }
+      },
+      [this](asterix::DropReason reason, std::uint64_t n) {
+        status.plots_rejected("asterix " + std::string(asterix::to_string(reason)), n);
+      });
 }
 
 std::optional<QueuedScan> Daemon::Impl::convert(const skytrack_dds_PlotBatch& batch,
@@ -270,22 +316,21 @@ Expected<std::unique_ptr<Daemon>> Daemon::create(const DaemonConfig& config) {
   if (!tracks) return unexpected(tracks.error());
   auto status = d.session.topic(&skytrack_dds_TrackerStatus_desc, dds.topics.status);
   if (!status) return unexpected(status.error());
-  auto reader = d.session.reader(*plots, plots_reader_qos(dds).get());
-  if (!reader) return unexpected(reader.error());
   auto tracks_writer = d.session.writer(*tracks, tracks_writer_qos(dds).get());
   if (!tracks_writer) return unexpected(tracks_writer.error());
   auto status_writer = d.session.writer(*status, status_writer_qos(dds).get());
   if (!status_writer) return unexpected(status_writer.error());
-  d.plots_reader = *reader;
   d.tracks_writer = *tracks_writer;
   d.status_writer = *status_writer;
-  d.waitset = dds_create_waitset(d.session.participant());
-  d.readable = dds_create_readcondition(d.plots_reader, DDS_ANY_STATE);
-  d.stop_guard = dds_create_guardcondition(d.session.participant());
-  if (d.waitset < 0 || d.readable < 0 || d.stop_guard < 0 ||
-      dds_waitset_attach(d.waitset, d.readable, d.readable) != DDS_RETCODE_OK ||
-      dds_waitset_attach(d.waitset, d.stop_guard, d.stop_guard) != DDS_RETCODE_OK) {
-    return make_error("creating the reception waitset failed");
+  if (config.input.udp()) {
+    auto udp = UdpInput::open(config.input.asterix);
+    if (!udp) return unexpected(udp.error());
+    d.udp = std::move(*udp);
+    spdlog::info("ASTERIX input on UDP {}, batch {}", d.udp->endpoint(),
+                 config.input.asterix.batch);
+  }
+  if (config.input.dds() && !d.open_plot_reception(*plots)) {
+    return make_error("creating the PlotBatch reader and its waitset failed");
   }
   spdlog::info(
       "topics: plots '{}' ({}), tracks '{}' ({}), status '{}' (every {} s, deadline {} s); "
@@ -306,7 +351,8 @@ void Daemon::start() {
   if (impl_->running) return;
   impl_->running = true;
   impl_->tracker = std::thread([this] { impl_->track_loop(); });
-  impl_->receiver = std::thread([this] { impl_->receive_loop(); });
+  if (impl_->config.input.dds()) impl_->receiver = std::thread([this] { impl_->receive_loop(); });
+  if (impl_->udp) impl_->start_udp();
 }
 
 void Daemon::publish_status() {
@@ -365,8 +411,11 @@ void Daemon::stop() {
   Impl& d = *impl_;
   if (!d.running) return;
   d.running = false;
-  dds_set_guardcondition(d.stop_guard, true);
-  d.receiver.join();
+  if (d.receiver.joinable()) {
+    dds_set_guardcondition(d.stop_guard, true);
+    d.receiver.join();
+  }
+  if (d.udp) d.udp->stop();
   d.queue.close();  // the tracker finishes the scan in hand, then sees the close
   d.tracker.join();
   if (const std::size_t left = d.queue.clear()) {

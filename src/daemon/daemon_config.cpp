@@ -6,6 +6,10 @@
 #include <exception>
 #include <filesystem>
 
+#include <arpa/inet.h>
+
+#include "skytrack/asterix/batcher.hpp"
+#include "skytrack/asterix/records.hpp"
 #include "skytrack/config/yaml_section.hpp"
 
 namespace skytrack::daemon {
@@ -77,6 +81,41 @@ void read_queue(YamlSection s, QueueSettings& q) {
   s.finish();
 }
 
+void read_input(YamlSection s, InputSettings& in) {
+  std::string mode(to_string(in.mode));
+  s.choice("from", mode, {"dds", "asterix", "both"});
+  in.mode = mode == "asterix" ? InputMode::kAsterix
+            : mode == "both"  ? InputMode::kBoth
+                              : InputMode::kDds;
+  YamlSection a = s.section("asterix");
+  AsterixInput& u = in.asterix;
+  a.text("address", u.address);
+  a.integer("port", u.port, Range{0.0, 65535.0});
+  a.text("interface", u.interface);
+  a.text("source", u.source);
+  a.text("batch", u.batch);
+  a.text("sensor", u.sensor);
+  a.boolean("keep_tests", u.keep_tests);
+  a.number("flush_after", u.flush_after, Range{0.01, 3600.0});
+  a.integer("receive_buffer_kb", u.receive_buffer_kb, Range{64.0, 1048576.0});
+  if (a.has("batch") && !asterix::parse_batch_mode(u.batch)) {
+    a.error("batch", "expected sector, revolution or block:N, got '" + u.batch + "'");
+  }
+  if (!u.sensor.empty() && !asterix::parse_sac_sic(u.sensor)) {
+    a.error("sensor", "expected SAC/SIC (two numbers 0..255), got '" + u.sensor + "'");
+  }
+  for (const auto* key : {"address", "interface", "source"}) {
+    const std::string& text = key[0] == 'a' ? u.address : key[0] == 'i' ? u.interface : u.source;
+    in_addr probe{};
+    if (a.has(key) && !(key[0] == 's' && text.empty()) &&
+        inet_pton(AF_INET, text.c_str(), &probe) != 1) {
+      a.error(key, "expected an IPv4 address, got '" + text + "'");
+    }
+  }
+  a.finish();
+  s.finish();
+}
+
 void read_logging(YamlSection s, LogSettings& l, const std::string& base_dir) {
   s.choice("level", l.level, {"trace", "debug", "info", "warn", "error", "critical", "off"});
   std::string sink = l.sink == LogSink::kFile ? "file" : "console";
@@ -120,6 +159,7 @@ DaemonConfig read_config(const YAML::Node& root, ErrorList& errors, const std::s
   d.integer("max_plots_per_scan", c.max_plots_per_scan, Range{1.0, 10000000.0});
   d.number("status_period", c.status_period, Range{0.01, 3600.0});
   d.finish();
+  read_input(top.section("input"), c.input);
   read_dds(top.section("dds"), c.dds);
   read_queue(top.section("queue"), c.queue);
   read_logging(top.section("logging"), c.logging, base_dir);
@@ -153,6 +193,18 @@ std::string_view to_string(Durability value) {
 }
 std::string_view to_string(OverloadPolicy value) {
   return value == OverloadPolicy::kDropNewest ? "drop_newest" : "drop_oldest";
+}
+
+std::string_view to_string(InputMode value) {
+  switch (value) {
+    case InputMode::kAsterix:
+      return "asterix";
+    case InputMode::kBoth:
+      return "both";
+    case InputMode::kDds:
+      break;
+  }
+  return "dds";
 }
 
 Expected<DaemonConfig> load_daemon_config(const std::string& path) {

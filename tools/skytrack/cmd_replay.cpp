@@ -2,7 +2,8 @@
 // N times faster, or as fast as the daemon takes them (--rate max: at most --window scans in
 // flight, a scan counting as taken once the daemon's TrackBatch for it or for a later scan
 // arrives; the daemon's queue is FIFO, so a later answer means the earlier scan was handled).
-// It waits for the daemon's reader to match before it starts.
+// It waits for the daemon's reader to match before it starts. --asterix replays an ASTERIX
+// recording instead, batched as `import-asterix` batches it.
 #include <chrono>
 #include <deque>
 #include <map>
@@ -15,9 +16,9 @@
 #include "commands.hpp"
 #include "dds_tool.hpp"
 #include "progress_bar.hpp"
+#include "scan_source.hpp"
 #include "skytrack/daemon/dds_session.hpp"
 #include "skytrack/dds/conversion.hpp"
-#include "skytrack/io/jsonl_reader.hpp"
 
 namespace skytrack::tool {
 namespace {
@@ -27,6 +28,8 @@ using Clock = std::chrono::steady_clock;
 struct ReplayOptions {
   DdsToolOptions dds;
   std::string plots;
+  std::string asterix;  // an ASTERIX recording instead of --plots
+  AsterixOptions asterix_options;
   std::string rate = "1";
   bool loop = false;
   bool quiet = false;
@@ -123,17 +126,16 @@ void Replayer::wait_in_flight(std::size_t limit) {
 }
 
 bool Replayer::pass(double time_offset, std::uint64_t scan_offset) {
-  std::size_t shown = 0;
-  auto reader = io::PlotStreamReader::open(options_.plots, [&](const io::LineError& e) {
-    ++lines_rejected_;
-    if (shown++ < 20) fmt::print(stderr, "{}\n", io::to_string(e));
-  });
+  auto reader = options_.asterix.empty()
+                    ? open_plot_stream(options_.plots)
+                    : open_asterix_recording(options_.asterix, options_.asterix_options);
   if (!reader) {
     fmt::print(stderr, "skytrack replay: {}\n", reader.error().message);
     return false;
   }
+  ScanSource& source = **reader;
   ProgressBar progress(!options_.quiet, "scans");
-  while (auto scan = reader->next()) {
+  while (auto scan = source.next()) {
     if (stop_requested()) break;
     scan->time += time_offset;
     for (Plot& p : scan->plots) {
@@ -167,9 +169,10 @@ bool Replayer::pass(double time_offset, std::uint64_t scan_offset) {
     if (rate_ == 0.0) in_flight_.sent(scan->sensor, scan->scan);
     ++scans_;
     plots_ += scan->plots.size();
-    progress.update(reader->bytes_read(), reader->file_size(), scans_);
+    progress.update(source.bytes_read(), source.file_size(), scans_);
   }
   progress.finish();
+  lines_rejected_ += source.rejected();
   return true;
 }
 
@@ -210,12 +213,13 @@ int Replayer::run() {
   } while (options_.loop && scans_ > 0 && !stop_requested());
   if (rate_ == 0.0) wait_in_flight(1);  // the last answers, so "done" means processed
   const double wall = std::chrono::duration<double>(Clock::now() - start_wall_).count();
-  fmt::print(stderr,
-             "skytrack replay: {} scans ({} plots) in {:.2f} s, {} pass(es), {} lines rejected{}\n",
-             scans_, plots_, wall, passes, lines_rejected_,
-             rate_ == 0.0 ? fmt::format(", {} scans unanswered by a TrackBatch",
-                                        unanswered_ + in_flight_.size())
-                          : "");
+  fmt::print(
+      stderr, "skytrack replay: {} scans ({} plots) in {:.2f} s, {} pass(es), {} {} rejected{}\n",
+      scans_, plots_, wall, passes, lines_rejected_,
+      options_.asterix.empty() ? "lines" : "ASTERIX errors",
+      rate_ == 0.0
+          ? fmt::format(", {} scans unanswered by a TrackBatch", unanswered_ + in_flight_.size())
+          : "");
   return 0;
 }
 
@@ -253,7 +257,13 @@ int run_replay(const ReplayOptions& options) {
 void add_replay_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<ReplayOptions>();
   CLI::App* cmd = app.add_subcommand("replay", "Publish a plot stream as PlotBatch samples (DDS)");
-  cmd->add_option("--plots", options->plots, "Plot stream to publish (JSON Lines)")->required();
+  auto* plots = cmd->add_option("--plots", options->plots, "Plot stream to publish (JSON Lines)");
+  auto* asterix = cmd->add_option("--asterix", options->asterix,
+                                  "ASTERIX recording to publish (raw, pcap, pcapng), batched "
+                                  "by --batch as import-asterix does");
+  plots->excludes(asterix);
+  asterix->excludes(plots);
+  add_asterix_options(*cmd, options->asterix_options);
   cmd->add_option("--rate", options->rate,
                   "1: recorded timing; N: N times faster; max: as fast as the daemon takes them")
       ->default_val("1");
@@ -266,7 +276,14 @@ void add_replay_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(1, 100000));
   cmd->add_flag("--quiet", options->quiet, "No progress bar");
   add_dds_options(*cmd, options->dds);
-  cmd->callback([options, &exit_code] { exit_code = run_replay(*options); });
+  cmd->callback([options, &exit_code] {
+    if (options->plots.empty() && options->asterix.empty()) {
+      fmt::print(stderr, "skytrack replay: one of --plots or --asterix is required\n");
+      exit_code = 2;
+      return;
+    }
+    exit_code = run_replay(*options);
+  });
 }
 
 }  // namespace skytrack::tool

@@ -58,12 +58,36 @@ struct LogSettings {
   int max_files = 5;     // rotated files kept
 };
 
+enum class InputMode : std::uint8_t { kDds, kAsterix, kBoth };
+
+/// Live ASTERIX over UDP (docs/daemon.md, docs/asterix.md). The default binds a loopback
+/// address: an external interface is only ever used when configured.
+struct AsterixInput {
+  std::string address = "127.0.0.1";    // unicast address to bind, or a multicast group
+  int port = 8600;                      // 0: any free port (logged)
+  std::string interface = "127.0.0.1";  // multicast: the local address to join the group on
+  std::string source;                   // only datagrams from this address; empty: any
+  std::string batch = "sector";         // sector, revolution or block:N
+  std::string sensor;                   // only this SAC/SIC; empty: any
+  bool keep_tests = false;              // keep SIM and TST reports
+  double flush_after = 5.0;             // [s] without datagrams: close the open batches
+  int receive_buffer_kb = 4096;         // SO_RCVBUF
+};
+
+struct InputSettings {
+  InputMode mode = InputMode::kDds;
+  AsterixInput asterix;
+  bool dds() const { return mode != InputMode::kAsterix; }
+  bool udp() const { return mode != InputMode::kDds; }
+};
+
 struct DaemonConfig {
   std::string instance = "skytrackd";  // TrackerStatus key
   std::string profile;                 // profile path (resolved); empty: built-in default
   std::vector<std::int64_t> sensors;   // accepted sensor ids; empty: any
   int max_plots_per_scan = 100000;     // larger batches are rejected as absurd
   double status_period = 1.0;          // [s]
+  InputSettings input;
   DdsSettings dds;
   QueueSettings queue;
   LogSettings logging;
@@ -81,5 +105,6 @@ Expected<DaemonConfig> parse_daemon_config(const std::string& yaml_text,
 std::string_view to_string(Reliability value);
 std::string_view to_string(Durability value);
 std::string_view to_string(OverloadPolicy value);
+std::string_view to_string(InputMode value);
 
 }  // namespace skytrack::daemon
