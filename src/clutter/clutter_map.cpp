@@ -42,7 +42,7 @@ struct Grid {
   std::int64_t wrap_b = 0;  // number of azimuth cells, 0 for Cartesian
 
   Grid(const PlotMeasurement& p, const ClutterMapCells& cells) {
-    if (p.model.kind == MeasurementKind::kPolar) {
+    if (is_polar(p.model.kind)) {
       size_a = cells.range;
       wrap_b = std::max<std::int64_t>(
           3, static_cast<std::int64_t>(std::ceil(2.0 * std::numbers::pi / cells.azimuth)));
@@ -117,7 +117,7 @@ void raise_to_local_density(std::span<const PlotMeasurement> plots,
     // The other components (elevation, range-rate, height) span what the block's plots span:
     // the width of a uniform spread with their variance, at least the plot's own noise's and
     // at most the form's extent; the form's extent when the block holds too few plots.
-    double volume = grid.block_area(c, p.model.kind == MeasurementKind::kPolar);
+    double volume = grid.block_area(c, is_polar(p.model.kind));
     for (int i = 2; i < p.z.size(); ++i) {
       const auto [low, high] = extent->second[i - 2];
       const double whole = std::max(high - low, 1e-6);

@@ -39,6 +39,7 @@ struct MeasurementSigmas {
   double x = 50.0;           // [m] Cartesian plots
   double y = 50.0;           // [m]
   double z = 100.0;          // [m]
+  double height = 15.0;      // [m] altitude from a flight level (Mode C: 100 ft steps)
   bool operator==(const MeasurementSigmas&) const = default;
 };
 
