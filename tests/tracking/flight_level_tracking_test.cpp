@@ -61,5 +61,31 @@ TEST(FlightLevelTracking, AircraftOvertakingOnOneAirwayAtTwoLevelsKeepTheirNumbe
   }
 }
 
+TEST(FlightLevelTracking, AReplyWithoutAltitudeAmongAltitudeRepliesKeepsOneTrack) {
+  // GIVEN a 3-D tracker (one aircraft reports Mode C) and a second aircraft whose
+  // transponder reports no altitude: its track's height is never measured
+  sim::Scenario scenario = secondary_radar();
+  sim::TargetSpec silent = target(2, {-21000.0, 30100.0, 9449.0}, {200.0, 0.0, 0.0});
+  silent.reports_altitude = false;
+  scenario.targets = {target(1, {-24000.0, 40000.0, 9144.0}, {230.0, 0.0, 0.0}), silent};
+  const auto run = track_scenario(scenario, 1, test_profile(), 500.0);
+  // WHEN it is tracked; THEN its track keeps one number over the whole run (its unknown
+  // height's spread, kilometres, does not delete it) and no branch replaces it
+  std::set<std::int64_t> numbers;
+  int frames = 0, events = 0;
+  for (const TrackFrame& frame : run.frames) {
+    for (const TrackReport& track : frame.tracks) {
+      if (is_reported_as_firm(track.status) && std::abs(track.position.y() - 30100.0) < 2000.0) {
+        numbers.insert(track.id);
+        ++frames;
+      }
+    }
+    for (const TrackEvent& e : frame.events) events += e.type.rfind("branch", 0) == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(numbers.size(), 1u);
+  EXPECT_GE(frames, 55);  // of 60 revolutions
+  EXPECT_EQ(events, 0);
+}
+
 }  // namespace
 }  // namespace skytrack
