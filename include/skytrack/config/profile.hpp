@@ -129,7 +129,7 @@ struct ClutterRejectionSpec {
 struct InitiationSpec {
   int m = 3;                 // plots needed ...
   int n = 4;                 // ... within this many consecutive scans
-  double min_speed = 10.0;   // [m/s] slower plot pairs are stationary clutter
+  double min_speed = 0.0;    // [m/s] slower plot pairs are taken as stationary clutter
   double max_speed = 700.0;  // [m/s] faster plot pairs cannot be one target
   // A track whose most likely plot has an association probability above this explains that
   // plot alone; the other plots in its gate may still seed (or extend) chains, e.g. a
