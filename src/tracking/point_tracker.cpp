@@ -56,6 +56,8 @@ bool measures_height(const PlotMeasurement& plot) {
 /// The manoeuvre gate's filter: the profile's manoeuvre models with their white acceleration
 /// raised to branching.manoeuvre_accel_sigma, in the main filter's state layout. Each gate
 /// starts the models from the track's combined estimate, so no mode switching is needed.
+/// Vertically too: a pull-up or a level change is a manoeuvre, and with flight levels the
+/// height is measured to tens of metres (canalA's military traffic climbs at 50 m/s).
 Expected<std::optional<ImmFilter>> manoeuvre_filter(const config::TrackingProfile& profile,
                                                     const ImmFilter& main) {
   const config::BranchingSpec& spec = profile.branching;
@@ -70,6 +72,7 @@ Expected<std::optional<ImmFilter>> manoeuvre_filter(const config::TrackingProfil
     }
     config::MotionModelSpec model = *it;
     model.accel_sigma = std::max(model.accel_sigma, spec.manoeuvre_accel_sigma);
+    model.vertical_accel_sigma = std::max(model.vertical_accel_sigma, spec.manoeuvre_accel_sigma);
     models.push_back(make_motion_model(model));
     names.push_back(name);
   }

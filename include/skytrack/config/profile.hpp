@@ -39,7 +39,7 @@ struct MeasurementSigmas {
   double x = 50.0;           // [m] Cartesian plots
   double y = 50.0;           // [m]
   double z = 100.0;          // [m]
-  double height = 15.0;      // [m] altitude from a flight level (Mode C: 100 ft steps)
+  double height = 30.0;      // [m] altitude from a flight level (ICAO: +-300 ft at 3 sigma)
   bool operator==(const MeasurementSigmas&) const = default;
 };
 
