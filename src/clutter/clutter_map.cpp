@@ -42,7 +42,7 @@ struct Grid {
   std::int64_t wrap_b = 0;  // number of azimuth cells, 0 for Cartesian
 
   Grid(const PlotMeasurement& p, const ClutterMapCells& cells) {
-    if (p.model.kind == MeasurementKind::kPolar) {
+    if (is_polar(p.model.kind)) {
       size_a = cells.range;
       wrap_b = std::max<std::int64_t>(
           3, static_cast<std::int64_t>(std::ceil(2.0 * std::numbers::pi / cells.azimuth)));
@@ -115,20 +115,22 @@ void raise_to_local_density(std::span<const PlotMeasurement> plots,
     if (counted[j] != 0) block.add(p, -1);  // not itself
     if (block.count <= 0) continue;
     // The other components (elevation, range-rate, height) span what the block's plots span:
-    // the width of a uniform spread with their variance, at least the plot's own noise's and
-    // at most the form's extent; the form's extent when the block holds too few plots.
-    double volume = grid.block_area(c, p.model.kind == MeasurementKind::kPolar);
+    // the width of a uniform spread with their variance, at most the form's extent (the
+    // form's extent when the block holds too few plots), and at least the plot's own noise's:
+    // no narrower spread can be told apart. Flight levels are whole steps, so plots on the
+    // ground share one value and their extent is nil: without the floor an airport's few
+    // uncounted plots made a density that called every plot round them clutter.
+    double volume = grid.block_area(c, is_polar(p.model.kind));
     for (int i = 2; i < p.z.size(); ++i) {
       const auto [low, high] = extent->second[i - 2];
-      const double whole = std::max(high - low, 1e-6);
-      double width = whole;
+      double width = high - low;
       if (block.count >= kMinForSpread) {
         const double n = block.count;
         const double mean = block.sum[i - 2] / n;
         const double variance = std::max(0.0, block.square[i - 2] / n - mean * mean);
-        width = std::clamp(std::sqrt(12.0 * variance), std::sqrt(12.0) * p.model.sigma[i], whole);
+        width = std::min(std::sqrt(12.0 * variance), width);
       }
-      volume *= std::max(width, 1e-6);
+      volume *= std::max({width, std::sqrt(12.0) * p.model.sigma[i], 1e-6});
     }
     density[j] = std::max(density[j], block.count / volume);
   }

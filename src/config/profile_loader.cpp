@@ -69,6 +69,7 @@ MeasurementSpec read_measurement(YamlSection s) {
   sigma.number("x", m.default_sigma.x, Range::positive());
   sigma.number("y", m.default_sigma.y, Range::positive());
   sigma.number("z", m.default_sigma.z, Range::positive());
+  sigma.number("height", m.default_sigma.height, Range::positive());
   sigma.finish();
   s.finish();
   return m;

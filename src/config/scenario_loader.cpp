@@ -4,6 +4,7 @@
 #include <set>
 
 #include "skytrack/config/yaml_section.hpp"
+#include "skytrack/core/transponder.hpp"
 
 namespace skytrack::config {
 namespace {
@@ -90,6 +91,21 @@ Eigen::Matrix2d read_shape(YamlSection& s, std::string_view key) {
   return m;
 }
 
+void read_transponder(YamlSection& s, TargetSpec& target) {
+  std::string code;
+  s.text("mode3a", code);
+  if (s.has("mode3a")) {
+    target.mode3a = parse_mode3a(code);
+    if (!target.mode3a) s.error("mode3a", "expected 4 octal digits as a string (\"2270\")");
+  }
+  s.text("mode_s", code);
+  if (s.has("mode_s")) {
+    target.mode_s = parse_mode_s(code);
+    if (!target.mode_s) s.error("mode_s", "expected 6 hex digits as a string (\"4CA2D7\")");
+  }
+  s.boolean("reports_altitude", target.reports_altitude);
+}
+
 TargetSpec read_target(YamlSection s, const Scenario& scenario) {
   TargetSpec target;
   s.integer("id", target.id, Range::non_negative(), true);
@@ -120,6 +136,7 @@ TargetSpec read_target(YamlSection s, const Scenario& scenario) {
     target.detection_windows.push_back(window);
   }
   s.boolean("truth", target.in_truth);
+  read_transponder(s, target);
   if (target.kind != ObjectKind::kPoint) {
     target.shape = read_shape(s, "shape");
     s.boolean("shape_follows_heading", target.shape_follows_heading);
@@ -174,6 +191,8 @@ SensorSpec read_sensor(YamlSection s) {
   s.number("max_range", sensor.max_range, Range::positive());
   if (!(sensor.max_range > sensor.min_range)) s.error("max_range", "must exceed min_range");
   s.boolean("range_rate", sensor.range_rate);
+  s.boolean("elevation", sensor.elevation);
+  s.number("flight_level_step", sensor.flight_level_step, Range::non_negative());
   read_sigma(s.section("sigma", true), sensor.sigma);
   std::string noise = "gaussian";
   s.choice("noise", noise, {"gaussian", "bounded"});

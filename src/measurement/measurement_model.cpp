@@ -5,10 +5,12 @@
 //   azimuth az = atan2(b_x, b_y)      daz/dp   = [b_y, -b_x, 0] R' / rho^2
 //   elev.   el = atan2(b_z, rho)      del/dp   = [-b_x b_z, -b_y b_z, rho^2] R' / (r^2 rho)
 //   rdot    = d.v / r                 drdot/dp = (v - rdot d / r)' / r,  drdot/dv = d' / r
+//   altitude h = |p - c| - R_e        dh/dp    = (p - c)' / |p - c|  (c the earth's centre)
 #include "skytrack/measurement/measurement_model.hpp"
 
 #include <cmath>
 
+#include "skytrack/geometry/altitude.hpp"
 #include "skytrack/geometry/angles.hpp"
 #include "skytrack/geometry/frames.hpp"
 
@@ -28,6 +30,11 @@ Relative relative_to(const MeasurementModel& model, const StateVec& x) noexcept 
     rel.v[axis] = x[StateLayout::velocity(axis)] - model.platform.velocity[axis];
   }
   return rel;
+}
+
+/// The state's position in the tracking frame (a 3-D state: polar height models only).
+Eigen::Vector3d model_position(const StateVec& x) noexcept {
+  return {x[StateLayout::position(0)], x[StateLayout::position(1)], x[StateLayout::position(2)]};
 }
 
 }  // namespace
@@ -55,6 +62,13 @@ MeasurementModel MeasurementModel::polar(const PlatformState& platform, bool ele
   return model;
 }
 
+MeasurementModel MeasurementModel::polar_height(const PlatformState& platform, bool range_rate,
+                                                const MeasVec& sigma) {
+  MeasurementModel model = polar(platform, true, range_rate, 3, sigma);
+  model.kind = MeasurementKind::kPolarHeight;
+  return model;
+}
+
 MeasVec MeasurementModel::measure(const StateLayout& /*layout*/, const StateVec& x) const noexcept {
   MeasVec z(size());
   if (kind == MeasurementKind::kCartesian) {
@@ -68,7 +82,11 @@ MeasVec MeasurementModel::measure(const StateLayout& /*layout*/, const StateVec&
   const double r = rel.d.norm();
   z[0] = r;
   z[1] = (b.x() == 0.0 && b.y() == 0.0) ? 0.0 : std::atan2(b.x(), b.y());
-  if (position_components == 3) z[2] = r == 0.0 ? 0.0 : std::atan2(b.z(), b.head<2>().norm());
+  if (kind == MeasurementKind::kPolarHeight) {
+    z[2] = altitude_of(model_position(x));
+  } else if (position_components == 3) {
+    z[2] = r == 0.0 ? 0.0 : std::atan2(b.z(), b.head<2>().norm());
+  }
   if (has_range_rate) z[size() - 1] = r == 0.0 ? 0.0 : rel.d.dot(rel.v) / r;
   return z;
 }
@@ -95,13 +113,20 @@ MeasJacobian MeasurementModel::jacobian(const StateLayout& layout,
     d_elevation =
         Eigen::RowVector3d(-b.x() * b.z(), -b.y() * b.z(), rho2) * enu_to_body / (r2 * rho);
   }
+  const Eigen::Vector3d d_altitude = kind == MeasurementKind::kPolarHeight
+                                         ? altitude_gradient(model_position(x))
+                                         : Eigen::Vector3d::Zero();
   const int rr_row = size() - 1;
   const double rdot = rel.d.dot(rel.v) / r;
   for (int axis = 0; axis < state_dims; ++axis) {
     const int p = StateLayout::position(axis);
     H(0, p) = d_range[axis];
     H(1, p) = d_azimuth[axis];
-    if (position_components == 3) H(2, p) = d_elevation[axis];
+    if (kind == MeasurementKind::kPolarHeight) {
+      H(2, p) = d_altitude[axis];
+    } else if (position_components == 3) {
+      H(2, p) = d_elevation[axis];
+    }
     if (has_range_rate) {
       H(rr_row, p) = (rel.v[axis] - rdot * rel.d[axis] / r) / r;
       H(rr_row, StateLayout::velocity(axis)) = rel.d[axis] / r;
@@ -119,6 +144,14 @@ MeasVec MeasurementModel::residual(const MeasVec& z, const MeasVec& zhat) const 
 
 MeasMat MeasurementModel::noise() const noexcept {
   return sigma.array().square().matrix().asDiagonal();
+}
+
+double MeasurementModel::volume_element(const MeasVec& z) const noexcept {
+  if (kind == MeasurementKind::kCartesian) return 1.0;
+  if (kind == MeasurementKind::kPolar && position_components == 3) {
+    return z[0] * z[0] * std::cos(z[2]);
+  }
+  return z[0];
 }
 
 }  // namespace skytrack

@@ -12,6 +12,14 @@ bool finite(const std::optional<double>& v) {
   return !v || std::isfinite(*v);
 }
 
+/// True when a plot of the batch measures height: an elevation, a z, or a polar plot's
+/// flight level.
+bool carries_height(const PlotScan& batch) {
+  return std::any_of(batch.plots.begin(), batch.plots.end(), [](const Plot& plot) {
+    return plot.elevation || plot.z || (plot.form == PlotForm::kPolar && plot.flight_level);
+  });
+}
+
 }  // namespace
 
 std::optional<std::string> invalid_plot_reason(const Plot& plot) {
@@ -39,10 +47,16 @@ std::optional<std::string> invalid_plot_reason(const Plot& plot) {
 
 int tracker_dimension(const config::TrackingProfile& profile, const PlotScan& first) {
   if (profile.dimension == 2 || profile.dimension == 3) return profile.dimension;
-  for (const Plot& plot : first.plots) {
-    if (plot.elevation || plot.z) return 3;
-  }
-  return 2;
+  return carries_height(first) ? 3 : 2;
+}
+
+std::optional<std::string> dimension_refusal(const config::TrackingProfile& profile,
+                                             const PlotScan& first) {
+  if (profile.dimension != 3 || first.plots.empty() || carries_height(first)) return std::nullopt;
+  return "profile '" + profile.identity.name + "' asks for 3-D tracking (dimension: 3), but " +
+         "sensor " + std::to_string(first.sensor) + "'s plots carry no height (no elevation, " +
+         "z or flight level): a 3-D track of them is useless; batch refused (use dimension: " +
+         "auto or 2 for this sensor)";
 }
 
 Expected<Pipeline> Pipeline::create(const config::TrackingProfile& profile) {
@@ -79,6 +93,7 @@ const PlotScan& Pipeline::without_invalid_plots(const PlotScan& scan) {
 
 const ScanResult& Pipeline::process(const PlotScan& scan) {
   result_.accepted = false;
+  result_.refused = false;
   result_.rejection.clear();
   result_.report = ScanReport{};
   if (auto reason = check_order(scan)) {
@@ -98,9 +113,26 @@ const ScanResult& Pipeline::process(const PlotScan& scan) {
   sensor.scan = scan.scan;
   sensor.time = scan.time;
   const PlotScan& usable = without_invalid_plots(scan);
-  if (!tracker_)
-    tracker_.emplace(*PointTracker::create(profile_, tracker_dimension(profile_, usable)));
-  sensor.feed.feed(usable, *tracker_, result_.frame, result_.report);
+  if (!tracker_) {
+    // The first batch with plots sets the dimension (an empty one says nothing of it).
+    if (auto refusal = dimension_refusal(profile_, usable)) {
+      ++counters_.scans_rejected;
+      result_.rejection = std::move(*refusal);
+      result_.refused = true;
+      return result_;
+    }
+    if (!usable.plots.empty()) {
+      tracker_.emplace(*PointTracker::create(profile_, tracker_dimension(profile_, usable)));
+    }
+  }
+  if (tracker_) {
+    sensor.feed.feed(usable, *tracker_, result_.frame, result_.report);
+  } else {
+    result_.frame = TrackFrame{};
+    result_.frame.sensor = usable.sensor;
+    result_.frame.scan = usable.scan;
+    result_.frame.time = usable.time;
+  }
   result_.report.plots_invalid += static_cast<int>(scan.plots.size() - usable.plots.size());
   counters_.plots_processed += scan.plots.size();
   counters_.plots_invalid += static_cast<std::uint64_t>(result_.report.plots_invalid);

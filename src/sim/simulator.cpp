@@ -9,6 +9,7 @@
 
 #include "skytrack/geometry/angles.hpp"
 #include "skytrack/geometry/frames.hpp"
+#include "transponder_reply.hpp"
 
 namespace skytrack::sim {
 namespace {
@@ -45,10 +46,10 @@ Expected<Simulator> Simulator::create(Scenario scenario, std::uint64_t seed) {
   if (!(scenario.duration >= 0.0)) return make_error("scenario.duration: must be >= 0");
   if (sensor.type == SensorSpec::Type::kPolar) {
     if (!needs(sensor.sigma.range) || !needs(sensor.sigma.azimuth) ||
-        (three_d && !needs(sensor.sigma.elevation)) ||
+        (three_d && sensor.elevation && !needs(sensor.sigma.elevation)) ||
         (sensor.range_rate && !needs(sensor.sigma.range_rate))) {
       return make_error("sensor.sigma: a polar sensor needs range, azimuth" +
-                        std::string(three_d ? ", elevation" : "") +
+                        std::string(three_d && sensor.elevation ? ", elevation" : "") +
                         (sensor.range_rate ? ", range_rate" : "") + " sigmas");
     }
   } else if (!needs(sensor.sigma.x) || !needs(sensor.sigma.y) ||
@@ -107,9 +108,10 @@ Expected<void> Simulator::build_targets() {
   if (sensor.type == SensorSpec::Type::kPolar) {
     r.range = s.range;
     r.azimuth = s.azimuth;
-    if (three_d) r.elevation = s.elevation;
+    const bool elevation = three_d && sensor.elevation;
+    if (elevation) r.elevation = s.elevation;
     if (sensor.range_rate) r.range_rate = s.range_rate;
-    measured = 2 + (three_d ? 1 : 0) + (sensor.range_rate ? 1 : 0);
+    measured = 2 + (elevation ? 1 : 0) + (sensor.range_rate ? 1 : 0);
   } else {
     r.x = s.x;
     r.y = s.y;
@@ -186,6 +188,7 @@ std::optional<Plot> Simulator::measure(const Eigen::Vector3d& position,
   // processor compensates its own motion), while the target is seen where it is at `time`.
   const PlatformState platform = platform_at(batch_time_of(time));
   const bool three_d = scenario_.dimensions == 3;
+  const bool elevation = three_d && sensor.elevation;
   const bool bounded = sensor.noise == SensorSpec::Noise::kBounded;
   std::normal_distribution<double> normal;
   const PolarPoint polar = enu_to_polar(position, platform);
@@ -193,7 +196,7 @@ std::optional<Plot> Simulator::measure(const Eigen::Vector3d& position,
 
   Plot plot;
   if (sensor.type == SensorSpec::Type::kPolar) {
-    const int dims = 2 + (three_d ? 1 : 0) + (sensor.range_rate ? 1 : 0);
+    const int dims = 2 + (elevation ? 1 : 0) + (sensor.range_rate ? 1 : 0);
     Eigen::VectorXd unit = bounded ? bounded_noise(dims) : Eigen::VectorXd(dims);
     if (!bounded) {
       for (int i = 0; i < dims; ++i) unit[i] = normal(rng_);
@@ -202,7 +205,7 @@ std::optional<Plot> Simulator::measure(const Eigen::Vector3d& position,
     plot.form = PlotForm::kPolar;
     plot.range = std::max(0.0, polar.range + *sensor.sigma.range * unit[k++]);
     plot.azimuth = wrap_angle(polar.azimuth + *sensor.sigma.azimuth * unit[k++]);
-    if (three_d) {
+    if (elevation) {
       // Noise past the zenith is the same direction seen from the other side.
       double elevation = polar.elevation + *sensor.sigma.elevation * unit[k++];
       if (std::abs(elevation) > std::numbers::pi / 2) {
@@ -244,7 +247,10 @@ void Simulator::add_target_plots(const Target& target, double begin, std::vector
   }
   std::bernoulli_distribution detected(pd);
   const auto emit = [&](const Eigen::Vector3d& position) {
-    if (auto plot = measure(position, state.velocity, time)) out.push_back({*plot, time});
+    if (auto plot = measure(position, state.velocity, time)) {
+      stamp_reply(*plot, position, scenario_.sensor, &spec);
+      out.push_back({*plot, time});
+    }
   };
 
   if (spec.kind == ObjectKind::kPoint) {
@@ -299,7 +305,10 @@ void Simulator::add_clutter(const ClutterSpec& clutter, double begin, double end
       if (rotating) time = illumination_time([&](double) { return position; }, begin);
     }
     // Clutter comes from stationary scatterers: its range-rate is the platform's own motion.
-    if (auto plot = measure(position, Eigen::Vector3d::Zero(), time)) out.push_back({*plot, time});
+    if (auto plot = measure(position, Eigen::Vector3d::Zero(), time)) {
+      stamp_reply(*plot, position, scenario_.sensor, nullptr);
+      out.push_back({*plot, time});
+    }
   }
 }
 

@@ -16,6 +16,7 @@ namespace {
 
 using tracking_detail::add_association;
 using tracking_detail::add_event;
+using tracking_detail::kLifeSpreadDims;
 using tracking_detail::mode_spread;
 using tracking_detail::position_of;
 using tracking_detail::position_spread;
@@ -51,7 +52,7 @@ std::optional<clutter::ClutterMapCells> clutter_map_cells(const config::ClutterM
       .range = map.range_cell, .azimuth = map.azimuth_cell, .cartesian = map.cartesian_cell};
 }
 
-/// True when the plot measures height (elevation or z).
+/// True when the plot measures height (elevation, z or altitude).
 bool measures_height(const PlotMeasurement& plot) {
   return plot.model.position_components == 3;
 }
@@ -59,6 +60,8 @@ bool measures_height(const PlotMeasurement& plot) {
 /// The manoeuvre gate's filter: the profile's manoeuvre models with their white acceleration
 /// raised to branching.manoeuvre_accel_sigma, in the main filter's state layout. Each gate
 /// starts the models from the track's combined estimate, so no mode switching is needed.
+/// Vertically too: a pull-up or a level change is a manoeuvre, and with flight levels the
+/// height is measured to tens of metres (canalA's military traffic climbs at 50 m/s).
 Expected<std::optional<ImmFilter>> manoeuvre_filter(const config::TrackingProfile& profile,
                                                     const ImmFilter& main) {
   const config::BranchingSpec& spec = profile.branching;
@@ -73,6 +76,7 @@ Expected<std::optional<ImmFilter>> manoeuvre_filter(const config::TrackingProfil
     }
     config::MotionModelSpec model = *it;
     model.accel_sigma = std::max(model.accel_sigma, spec.manoeuvre_accel_sigma);
+    model.vertical_accel_sigma = std::max(model.vertical_accel_sigma, spec.manoeuvre_accel_sigma);
     models.push_back(make_motion_model(model));
     names.push_back(name);
   }
@@ -320,7 +324,14 @@ bool PointTracker::covers_region(const PlotScan& scan, const Eigen::Vector3d& ce
 }
 
 void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span) {
-  index_.build(positions_, layout_.dims);
+  // A 3-D tracker's polar plot without height lies at el = 0, kilometres under its target's
+  // track: a batch holding one is searched on the horizontal plane (the exact gate is in
+  // measurement space), so a secondary radar's reply without Mode C still finds its track.
+  const bool heightless =
+      layout_.dims == 3 && std::any_of(plots_.begin(), plots_.end(), [](const PlotMeasurement& p) {
+        return is_polar(p.model.kind) && !measures_height(p);
+      });
+  index_.build(positions_, heightless ? 2 : layout_.dims);
   candidates_.clear();
   manoeuvre_candidates_.clear();
   // branching.last_motion_false_plots weighs the clutter round each plot while gating: from
@@ -659,7 +670,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
     if (!detected) hold_last_motion(track);
   }
   const LifeChange change = advance_life(
-      track.life, detected, mode_spread(track.estimate, layout_.dims), profile_.track_life);
+      track.life, detected, mode_spread(track.estimate, kLifeSpreadDims), profile_.track_life);
   if (change.confirmed) {
     add_event(frame, "confirmed", track.id, "");
     if (branching()) confirmed_now_.push_back(t);
@@ -959,10 +970,7 @@ double PointTracker::clutter_density(const PlotMeasurement& plot, int index) con
   const MeasurementModel& m = plot.model;
   double density =
       profile_.association.clutter_density.value_or(sparse_clutter_density(m.position_components));
-  if (m.kind == MeasurementKind::kPolar) {
-    const double r = plot.z[0];
-    density *= m.position_components == 3 ? r * r * std::cos(plot.z[2]) : r;
-  }
+  density *= m.volume_element(plot.z);
   if (m.has_range_rate) density /= 2.0 * profile_.initiation.max_speed;
   return density;
 }

@@ -33,6 +33,7 @@ namespace {
 
 using tracking_detail::add_association;
 using tracking_detail::add_event;
+using tracking_detail::kLifeSpreadDims;
 using tracking_detail::mode_spread;
 using tracking_detail::position_of;
 using tracking_detail::position_spread;
@@ -127,7 +128,7 @@ bool PointTracker::suspends_before_gating(const PointTrack& track, const Gaussia
     return false;
   }
   const std::optional<ImmEstimate> last = last_motion(track, time);
-  return position_spread(last ? last->modes.front() : mid, layout_.dims) >
+  return position_spread(last ? last->modes.front() : mid, kLifeSpreadDims) >
          kSuspendBeforeGating * profile_.track_life.delete_position_sigma;
 }
 
@@ -528,7 +529,7 @@ bool PointTracker::age_coast_son(int t, double time) {
     son.estimate = std::move(*held);
   }
   return son.life.consecutive_misses < profile_.track_life.delete_confirmed_misses &&
-         position_spread(son.estimate.modes.front(), layout_.dims) <=
+         position_spread(son.estimate.modes.front(), kLifeSpreadDims) <=
              profile_.track_life.delete_position_sigma;
 }
 
@@ -602,7 +603,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
     update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
                      profile_.association.gate_probability, profile_.track_life);
     const LifeChange change = advance_life(
-        branch.life, true, mode_spread(branch.estimate, layout_.dims), profile_.track_life);
+        branch.life, true, mode_spread(branch.estimate, kLifeSpreadDims), profile_.track_life);
     if (change.confirmed) add_event(frame, "confirmed", number, "");
     return;
   }
@@ -797,7 +798,7 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
     if (touched) continue;
     branch.score += miss;
     branch.estimate = filter_.predict(branch.estimate, std::max(frame.time, branch.estimate.time));
-    const double spread = mode_spread(branch.estimate, layout_.dims);
+    const double spread = mode_spread(branch.estimate, kLifeSpreadDims);
     if (weighs_existence(branch)) {
       update_existence(branch.life, 0.0, profile_.association.detection_probability,
                        profile_.association.gate_probability, profile_.track_life);

@@ -16,6 +16,12 @@
 
 namespace skytrack::tracking_detail {
 
+/// Position components the track-life spread test (track_life.delete_position_sigma)
+/// measures: the horizontal ones. A 3-D track's height may never be measured (a secondary
+/// radar's replies without Mode C, a primary radar's plots among them): that leaves it no less
+/// a track, yet its unknown height's spread (3 km at the start, growing) would delete it.
+inline constexpr int kLifeSpreadDims = 2;
+
 /// sqrt of the largest eigenvalue of the position block [m].
 inline double position_spread(const Gaussian& g, int dims) {
   Eigen::Matrix3d pos = Eigen::Matrix3d::Zero();

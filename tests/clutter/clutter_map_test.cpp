@@ -3,6 +3,7 @@
 // the azimuth wrap, and Cartesian plots.
 #include "skytrack/clutter/clutter_map.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <initializer_list>
 #include <numbers>
@@ -132,6 +133,25 @@ TEST(ClutterMap, AzimuthWrapsRoundNorthAndSouth) {
     EXPECT_GT(a[j], 0.0);
     EXPECT_NEAR(a[j], b[j], 1e-9 * b[j]) << "plot " << j;
   }
+}
+
+TEST(ClutterMap, PlotsSharingOneFlightLevelSpreadAtLeastTheirOwnHeightNoise) {
+  // GIVEN three aircraft on the ground 2 km from an airport radar whose replies all report
+  // the same flight level (whole steps), none yet explained by a track
+  Batch b;
+  for (int i = 0; i < 3; ++i) {
+    PlotMeasurement p;
+    p.model = MeasurementModel::polar_height(PlatformState{}, false, vec({15.0, 0.0012, 30.0}));
+    p.z = vec({2000.0 + 10.0 * i, 0.3 + 0.03 * i, 7.62});
+    b.add(p);
+  }
+  // WHEN their clutter density is mapped (too few for a spread of their own)
+  const std::vector<double> d = b.densities();
+  // THEN the height width is the plots' own noise width (sqrt 12 x 30 m), not the nil extent
+  // of identical values: the two other plots over the 3 x 3 block of 5 km x 0.05 rad cells
+  // (clipped at zero range) times 104 m
+  const double area = (2.0 * 5000.0) * 3.0 * (2.0 * kPi / 126.0);
+  EXPECT_NEAR(d[0], 2.0 / (area * std::sqrt(12.0) * 30.0), 1e-9 * d[0]);
 }
 
 TEST(ClutterMap, CartesianPlotsAreCountedOverTheirBlockArea) {

@@ -99,6 +99,37 @@ targets:
   EXPECT_TRUE(scenario->targets[1].velocity_from_parent);
 }
 
+TEST(ScenarioLoader, ReadsASecondaryRadarAndTransponders) {
+  const auto scenario = parse_scenario(R"(
+scenario: {name: ssr, duration: 10, dimensions: 3}
+sensor:
+  scan_period: 4
+  elevation: false
+  flight_level_step: 0.25
+  sigma: {range: 10, azimuth: 0.001}
+targets:
+  - {id: 1, position: [0, 1000, 3000], mode3a: "2270", mode_s: "4ca2d7"}
+  - {id: 2, position: [0, 2000, 3000], reports_altitude: false}
+)",
+                                       "ssr.yaml");
+  ASSERT_TRUE(scenario) << scenario.error().message;
+  EXPECT_FALSE(scenario->sensor.elevation);
+  EXPECT_EQ(scenario->sensor.flight_level_step, 0.25);
+  EXPECT_EQ(scenario->targets[0].mode3a, 02270);
+  EXPECT_EQ(scenario->targets[0].mode_s, 0x4CA2D7u);
+  EXPECT_TRUE(scenario->targets[0].reports_altitude);
+  EXPECT_FALSE(scenario->targets[1].mode3a.has_value());
+  EXPECT_FALSE(scenario->targets[1].reports_altitude);
+  // A code that is not 4 octal digits is named.
+  const auto bad = parse_scenario(std::string(kMinimal) + R"(
+targets:
+  - {id: 1, position: [0, 1000], mode3a: "2298"}
+)",
+                                  "bad.yaml");
+  ASSERT_FALSE(bad);
+  EXPECT_THAT(bad.error().message, HasSubstr("mode3a: expected 4 octal digits"));
+}
+
 TEST(ScenarioLoader, NamesFileLineKeyAndExpectationForMistakes) {
   const struct {
     const char* yaml;

@@ -81,6 +81,9 @@ TEST(MeasurementModel, AnalyticJacobiansEqualNumericalOnesForEveryKind) {
        MeasurementModel::polar(moving, true, true, 3, sigmas(4)), l3},
       {"polar 2 + rdot, attitude, full layout",
        MeasurementModel::polar(moving, false, true, 3, sigmas(3)), full3},
+      {"polar height on 3-D", MeasurementModel::polar_height(level, false, sigmas(3)), l3},
+      {"polar height + rdot, moving platform, full layout",
+       MeasurementModel::polar_height(moving, true, sigmas(4)), full3},
   };
   const Eigen::Vector3d positions[] = {
       {12000.0, 30000.0, 2000.0}, {-25000.0, -4000.0, 9000.0}, {300.0, -800.0, 5800.0}};

@@ -89,6 +89,72 @@ TEST(Pipeline, ChoosesTheTrackerDimensionFromThePlots) {
   EXPECT_EQ(tracker_dimension(fixed, flat), 2);
 }
 
+TEST(Pipeline, FlightLevelsOnPolarPlotsGiveAThreeDimensionalTracker) {
+  // GIVEN secondary-radar plots: slant range, azimuth and a flight level, no elevation
+  const config::TrackingProfile automatic = testing::test_profile();
+  Plot reply;
+  reply.range = 40e3;
+  reply.azimuth = 0.5;
+  PlotScan scan = batch(0, 0.0, {reply});
+  EXPECT_EQ(tracker_dimension(automatic, scan), 2);
+  scan.plots[0].flight_level = 350.0;
+  // THEN dimension auto tracks height
+  EXPECT_EQ(tracker_dimension(automatic, scan), 3);
+  // AND a Cartesian plot's flight level is not a height measurement
+  PlotScan cartesian_scan = batch(0, 0.0, {cartesian(0, 1.0, 2.0)});
+  cartesian_scan.plots[0].flight_level = 350.0;
+  EXPECT_EQ(tracker_dimension(automatic, cartesian_scan), 2);
+}
+
+TEST(Pipeline, ThreeDimensionalProfileRefusesPlotsWithoutHeight) {
+  // GIVEN a profile that asks for 3-D and a secondary radar's plots without flight levels
+  config::TrackingProfile profile = testing::test_profile();
+  profile.identity.name = "forced";
+  profile.dimension = 3;
+  auto pipeline = Pipeline::create(profile);
+  ASSERT_TRUE(pipeline);
+  Plot reply;
+  reply.range = 40e3;
+  reply.azimuth = 0.5;
+  // WHEN the first batch comes (an empty one before it says nothing and passes)
+  EXPECT_TRUE(pipeline->process(batch(0, 0.0, {})).accepted);
+  const ScanResult& refused = pipeline->process(batch(1, 4.0, {reply}));
+  // THEN it is refused, and the message says why and what to do
+  EXPECT_FALSE(refused.accepted);
+  EXPECT_TRUE(refused.refused);
+  EXPECT_NE(refused.rejection.find("'forced' asks for 3-D tracking (dimension: 3)"),
+            std::string::npos);
+  EXPECT_NE(refused.rejection.find("carry no height"), std::string::npos);
+  EXPECT_NE(refused.rejection.find("dimension: auto or 2"), std::string::npos);
+  EXPECT_EQ(pipeline->counters().scans_rejected, 1u);
+  // AND a batch whose plots carry flight levels is served, in 3-D
+  reply.flight_level = 300.0;
+  EXPECT_TRUE(pipeline->process(batch(2, 8.0, {reply})).accepted);
+  // AND a profile with dimension auto takes the same height-less plots in 2-D
+  auto automatic = Pipeline::create(testing::test_profile());
+  reply.flight_level.reset();
+  EXPECT_TRUE(automatic->process(batch(1, 4.0, {reply})).accepted);
+}
+
+TEST(Pipeline, AnEmptyFirstBatchLeavesTheDimensionToTheFirstPlots) {
+  // GIVEN dimension auto, an empty first batch, then flight-level plots of one aircraft
+  auto pipeline = Pipeline::create(testing::test_profile());
+  ASSERT_TRUE(pipeline);
+  EXPECT_TRUE(pipeline->process(batch(0, 0.0, {})).accepted);
+  int dims = 0;
+  for (int k = 1; k <= 6; ++k) {
+    Plot reply;
+    reply.range = 40e3 + 800.0 * k;
+    reply.azimuth = 0.5;
+    reply.flight_level = 300.0;
+    const ScanResult& r = pipeline->process(batch(k, 4.0 * k, {reply}));
+    ASSERT_TRUE(r.accepted);
+    for (const TrackReport& t : r.frame.tracks) dims = t.dims;
+  }
+  // THEN its track is 3-D
+  EXPECT_EQ(dims, 3);
+}
+
 TEST(Pipeline, ModesOtherThanPointAreRefusedAtStart) {
   config::TrackingProfile profile = testing::test_profile();
   profile.mode = config::TrackingMode::kGroup;

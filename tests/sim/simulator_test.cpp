@@ -326,6 +326,43 @@ TEST(Simulator, ClutterPatchesAddToTheBackground) {
   EXPECT_NEAR(total / batches.size(), 40.0, 0.8);  // standard error 0.2
 }
 
+TEST(Simulator, SecondaryRadarReportsIdentitiesAndRoundedFlightLevels) {
+  // GIVEN a 3-D scenario seen by a secondary radar (no elevation, Mode C flight levels) and
+  // an aircraft at 3000 m with a Mode S address, another without altitude reporting
+  Scenario scenario = base_scenario();
+  scenario.dimensions = 3;
+  scenario.duration = 5.0;
+  scenario.sensor.elevation = false;
+  scenario.sensor.flight_level_step = 1.0;
+  TargetSpec reporting = point_target(1, {0.0, 10000.0, 3000.0}, {100.0, 0.0, 0.0});
+  reporting.mode_s = 0x4CA2D7;
+  reporting.mode3a = 02270;
+  TargetSpec silent = point_target(2, {0.0, 20000.0, 3000.0}, {100.0, 0.0, 0.0});
+  silent.reports_altitude = false;
+  scenario.targets = {reporting, silent};
+  // WHEN it is simulated (elevation needs no sigma)
+  const auto batches = run(scenario, 3);
+  ASSERT_FALSE(batches.empty());
+  for (const SimulatedBatch& b : batches) {
+    EXPECT_FALSE(b.plots.sigma.elevation.has_value());
+    ASSERT_EQ(b.plots.plots.size(), 2u);
+    for (const Plot& plot : b.plots.plots) {
+      EXPECT_FALSE(plot.elevation.has_value());
+      if (plot.range < 15000.0) {
+        // THEN the aircraft's plot carries its identities and its altitude in whole flight
+        // levels (3000 m + 7.8 m for the earth's curve = FL 98.7 -> 99)
+        EXPECT_EQ(plot.mode_s, 0x4CA2D7u);
+        EXPECT_EQ(plot.mode3a, 02270);
+        ASSERT_TRUE(plot.flight_level.has_value());
+        EXPECT_EQ(*plot.flight_level, 99.0);
+      } else {
+        EXPECT_FALSE(plot.flight_level.has_value());  // AND the other reports none
+        EXPECT_FALSE(plot.mode_s.has_value());
+      }
+    }
+  }
+}
+
 TEST(Simulator, RejectsASensorWithoutTheSigmasItNeeds) {
   Scenario scenario = base_scenario();
   scenario.dimensions = 3;  // needs elevation

@@ -97,6 +97,32 @@ TEST(SkytrackSimulate, BadScenarioIsReportedWithItsKeyAndFails) {
   EXPECT_THAT(r.output, HasSubstr("hand.truth.jsonl"));
 }
 
+TEST(SkytrackTrack, ThreeDimensionalProfileOnPlotsWithoutHeightStopsWithTheReason) {
+  // GIVEN secondary-radar plots without flight levels and a profile that forces 3-D
+  const auto dir = std::filesystem::temp_directory_path() / "skytrack_cli_refusal";
+  std::filesystem::create_directories(dir);
+  const std::string plots = (dir / "p.jsonl").string();
+  {
+    std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(plots.c_str(), "w"), std::fclose);
+    ASSERT_TRUE(f);
+    for (int k = 0; k < 3; ++k) {
+      std::fprintf(f.get(),
+                   "{\"sensor\": 1, \"scan\": %d, \"time\": %d, \"plots\": [{\"id\": 0, "
+                   "\"range\": 40000, \"azimuth\": 0.5}]}\n",
+                   k, 4 * k);
+    }
+  }
+  // WHEN it is tracked
+  const RunResult r = run("track --quiet --profile " + std::string(SKYTRACK_SOURCE_DIR) +
+                          "/config/profiles/airborne.yaml --plots " + plots + " --out " +
+                          (dir / "t.jsonl").string());
+  // THEN the run stops at the first batch, naming the profile and what to change
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("batch 0: profile 'airborne' asks for 3-D tracking"));
+  EXPECT_THAT(r.output, HasSubstr("use dimension: auto or 2"));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(SkytrackEval, MissingFileFailsWithItsName) {
   const RunResult r = run("eval --truth /nonexistent/t.jsonl --tracks /nonexistent/k.jsonl");
   EXPECT_NE(r.exit_code, 0);

@@ -305,6 +305,33 @@ TEST(PointTracker, SingleTargetInClutterGetsNoDuplicateTrack) {
   }
 }
 
+TEST(PointTracker, StationaryAndSlowTargetsSeenByAPreciseRadarAreTracked) {
+  // GIVEN a precise radar (3 m, 0.3 mrad, 4 s: a surface movement radar's class) and, 3 km
+  // out, a parked target, one moving at 1 m/s and one at 3 m/s, 4 km apart (out of each
+  // other's initiation reach)
+  sim::Scenario scenario = radar_scenario(0.0, sim::SensorSpec::Antenna::kSnapshot);
+  scenario.duration = 120.0;
+  scenario.sensor.scan_period = 4.0;
+  scenario.sensor.sigma.range = 3.0;
+  scenario.sensor.sigma.azimuth = 0.0003;
+  scenario.targets = {target(1, {0.0, 3000.0, 0.0}, {0.0, 0.0, 0.0}),
+                      target(2, {3000.0, 0.0, 0.0}, {1.0, 0.0, 0.0}),
+                      target(3, {-3000.0, 0.0, 0.0}, {0.0, 3.0, 0.0})};
+  // WHEN the default profile tracks them
+  const auto run = track_scenario(scenario, 4, test_profile(), 50.0);
+  // THEN each has one track from its third or fourth look on
+  EXPECT_EQ(run.summary.id_changes, 0);
+  for (const auto& truth : run.summary.continuity) {
+    EXPECT_GE(truth.frames_tracked, truth.frames_present - 5) << "truth " << truth.truth_id;
+  }
+  // AND a 10 m/s floor on the speed of initiating pairs (the default before) lost them all:
+  // a pair's 18 m of noise slack over 4 s reaches 4.5 m/s, not 10
+  config::TrackingProfile floored = test_profile();
+  floored.initiation.min_speed = 10.0;
+  const auto lost = track_scenario(scenario, 4, floored, 50.0);
+  for (const auto& truth : lost.summary.continuity) EXPECT_EQ(truth.frames_tracked, 0);
+}
+
 TEST(PointTracker, SameInputGivesBitIdenticalOutput) {
   sim::Scenario scenario = radar_scenario(40.0, sim::SensorSpec::Antenna::kRotating);
   scenario.duration = 60.0;

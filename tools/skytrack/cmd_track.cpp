@@ -86,6 +86,12 @@ int run_track(const TrackOptions& options) {
     const ScanResult& result = pipeline->process(*scan);
     latency_ms.push_back(
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+    if (result.refused) {  // the profile cannot serve this stream: stop, do not track on
+      progress.finish();
+      fmt::print(stderr, "skytrack track: {}: batch {}: {}\n", options.plots, scan->scan,
+                 result.rejection);
+      return 2;
+    }
     if (!result.accepted) {
       if (rejected_scans++ < 20)
         fmt::print(stderr, "\n{}: batch skipped: {}\n", options.plots, result.rejection);

@@ -41,6 +41,7 @@ struct MeasurementSigmas {
   double x = 50.0;           // [m] Cartesian plots
   double y = 50.0;           // [m]
   double z = 100.0;          // [m]
+  double height = 30.0;      // [m] altitude from a flight level (ICAO: +-300 ft at 3 sigma)
   bool operator==(const MeasurementSigmas&) const = default;
 };
 
@@ -130,7 +131,7 @@ struct ClutterRejectionSpec {
 struct InitiationSpec {
   int m = 3;                 // plots needed ...
   int n = 4;                 // ... within this many consecutive scans
-  double min_speed = 10.0;   // [m/s] slower plot pairs are stationary clutter
+  double min_speed = 0.0;    // [m/s] slower plot pairs are taken as stationary clutter
   double max_speed = 700.0;  // [m/s] faster plot pairs cannot be one target
   // A track whose most likely plot has an association probability above this explains that
   // plot alone; the other plots in its gate may still seed (or extend) chains, e.g. a

@@ -11,11 +11,19 @@
 //                       (el = 0 when absent), then re-expressed as horizontal polar
 //                       (rho, az_h) about the platform's horizontal position, az_h from the
 //                       heading. For a level platform this is exactly (r cos el, az).
+//   polar r, az, flight level, no elevation (a secondary-radar reply with Mode C / S altitude)
+//                       3-D tracker: slant range, azimuth and altitude (MeasurementKind::
+//                       kPolarHeight), sigma_h = the profile's default_sigma.height.
+//                       2-D tracker: as a polar plot at the elevation that puts it at its
+//                       altitude (geometry/altitude.hpp), so rho = sqrt(r^2 - dz^2) instead
+//                       of the slant range: 6.5 instead of 9.8 km for FL 220 at 9.8 km.
+//                       Cartesian plots ignore the flight level.
 //   (+ range-rate)      kept as the last component. 2-D tracker: projected on the horizontal
 //                       line of sight assuming the target flies level,
 //                       rdot_h = (r rdot + dz v_sz) / rho, sigma scaled by r / rho.
 // Sigma precedence: plot.sigma > scan.sigma > the profile's defaults. 2-D horizontal range
-// sigma: sigma_rho^2 = (sigma_r rho / r)^2 + (dz sigma_el)^2 (first-order propagation).
+// sigma: sigma_rho^2 = (sigma_r rho / r)^2 + (dz sigma_el)^2 (first-order propagation); from a
+// flight level, sigma_rho^2 = ((r sigma_r)^2 + (dz sigma_h)^2) / rho^2.
 #include <cstdint>
 
 #include <Eigen/Core>
@@ -47,8 +55,8 @@ Expected<PlotMeasurement> measurement_from_plot(const Plot& plot, const PlotScan
                                                 int tracker_dims);
 
 /// The plot's position in the tracking frame, for gating indexes and initiation. Polar plots
-/// without elevation are placed at el = 0 in the body frame (as plot_position_enu does);
-/// 2-D measurements (state_dims == 2) return z = 0.
+/// without elevation are placed at el = 0 in the body frame (as plot_position_enu does), with
+/// a flight level at its altitude; 2-D measurements (state_dims == 2) return z = 0.
 Eigen::Vector3d approximate_position(const PlotMeasurement& measurement) noexcept;
 
 }  // namespace skytrack

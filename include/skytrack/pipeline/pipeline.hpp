@@ -30,6 +30,7 @@ struct PipelineCounters {
 struct ScanResult {
   bool accepted = false;
   std::string rejection;  // why the batch was skipped
+  bool refused = false;   // skipped because the profile cannot serve these plots
   TrackFrame frame;       // valid when accepted
   ScanReport report;
 };
@@ -51,7 +52,7 @@ class Pipeline {
   const PlotScan& without_invalid_plots(const PlotScan& scan);
 
   config::TrackingProfile profile_;
-  std::optional<PointTracker> tracker_;  // created with the first batch (its dimension)
+  std::optional<PointTracker> tracker_;  // created with the first batch with plots
   struct SensorState {
     std::uint64_t scan = 0;  // the latest batch's number and time
     double time = 0.0;
@@ -64,8 +65,14 @@ class Pipeline {
 };
 
 /// The tracker dimension for a profile and the first batch: the profile's, or (auto) 3 when
-/// the plots carry height (elevation or z), else 2.
+/// the plots carry height (elevation, z, or a polar plot's flight level), else 2.
 int tracker_dimension(const config::TrackingProfile& profile, const PlotScan& first);
+
+/// Why a profile that asks for 3-D (dimension: 3) refuses a first batch whose plots carry no
+/// height at all (no elevation, z or polar flight level): slant range and azimuth alone leave
+/// the height unknown, and such tracks are useless. nullopt: served (or no plots to judge).
+std::optional<std::string> dimension_refusal(const config::TrackingProfile& profile,
+                                             const PlotScan& first);
 
 /// Why a plot cannot be used (non-finite value, negative range, neither or both forms), if so.
 std::optional<std::string> invalid_plot_reason(const Plot& plot);

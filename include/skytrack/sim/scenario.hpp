@@ -66,6 +66,11 @@ struct TargetSpec {
   PlotModel plot_model = PlotModel::kMembers;  // groups: each member detected, or Poisson
   double plot_rate = 0.0;  // Poisson mean of plots per scan (extended, or group kPoisson)
   bool shape_follows_heading = false;  // rotate the shape with the velocity heading
+  // Transponder: identities written on every plot of the target, and whether its replies
+  // carry its altitude (with a sensor that reports flight levels).
+  std::optional<std::uint16_t> mode3a;
+  std::optional<std::uint32_t> mode_s;
+  bool reports_altitude = true;
 };
 
 struct PlatformSpec {
@@ -87,6 +92,10 @@ struct SensorSpec {
   double min_range = 0.0;                                      // [m]
   double max_range = std::numeric_limits<double>::infinity();  // [m]
   bool range_rate = false;                                     // polar sensors: report range-rate
+  bool elevation = true;  // 3-D polar sensors: report elevation (false: a secondary radar)
+  /// > 0: target plots carry their altitude as a flight level rounded to this step [100 ft]
+  /// (1: Mode C, 0.25: Mode S), and clutter plots the altitude of their false position.
+  double flight_level_step = 0.0;
   MeasurementSigma sigma;  // noise standard deviations (or ellipsoid semi-axes if bounded)
   enum class Noise : std::uint8_t { kGaussian, kBounded };
   Noise noise = Noise::kGaussian;
