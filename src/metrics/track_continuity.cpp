@@ -27,6 +27,7 @@ void TrackContinuity::observe(std::int64_t truth_id, std::optional<std::int64_t>
       state.seen_tracks.end()) {
     state.seen_tracks.push_back(*track_id);
     ++r.distinct_tracks;
+    r.tracks.push_back(*track_id);
   }
   r.last_track = track_id;
   r.tracked_now = true;

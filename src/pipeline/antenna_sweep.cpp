@@ -129,17 +129,14 @@ AntennaSweep::Kind AntennaSweep::read(const PlotScan& scan) {
   return kind_;
 }
 
-void AntennaSweep::give_up() {
-  if (kind_ == Kind::kUndecided) kind_ = Kind::kSnapshot;
-}
-
 void AntennaSweep::place(const PlotScan& scan, double base, std::vector<double>& sweeps) {
   sweeps.clear();
   if (kind_ != Kind::kRotating) return;
   order(scan);
   if (!anchored_ && !ordered_.empty()) {
     latest_time_ = ordered_.front().time;
-    latest_sweep_ = base + kTwoPi + wrap_angle_positive(sense_ * ordered_.front().azimuth);
+    const double u = sense_ * ordered_.front().azimuth;  // its sweep, mod 2 pi
+    latest_sweep_ = base + kTwoPi + wrap_angle_positive(u - base);
     anchored_ = true;
   }
   sweeps.resize(scan.plots.size());

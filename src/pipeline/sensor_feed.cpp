@@ -9,10 +9,10 @@
 namespace skytrack {
 namespace {
 
-// While the antenna is learnt, at most this many batches or seconds of plots wait; then it
-// is taken for a snapshot sensor.
-constexpr std::size_t kMaxWaiting = 256;
-constexpr double kMaxWaitTime = 60.0;  // [s]
+// While the antenna is learnt, at most this many batches or seconds of plots wait; then its
+// batches are tracked as they come until the rotation is known.
+constexpr std::size_t kMaxWaiting = 64;
+constexpr double kMaxWaitTime = 5.0;  // [s]
 
 /// Adds a later look's counts to a batch's report; the track counts are the later look's.
 void add_look(ScanReport& total, const ScanReport& look) {
@@ -83,14 +83,13 @@ void SensorFeed::feed(const PlotScan& batch, PointTracker& tracker, TrackFrame& 
     // together), they wait, so that a sector feed's first batches are not taken for looks at
     // everything; a batch that teaches nothing (one plot a revolution) is tracked as it is.
     const bool learning = antenna_.samples() > samples;
-    if (learning && waiting_.size() < kMaxWaiting &&
+    if (learning && !waited_out_ && waiting_.size() < kMaxWaiting &&
         (waiting_.empty() || batch.time - waiting_.front().time < kMaxWaitTime)) {
       waiting_.push_back(batch);
       tracker.report_only(batch, frame, report);
       return;
     }
-    if (learning) antenna_.give_up();
-    kind = antenna_.kind();
+    waited_out_ = waited_out_ || learning;
   }
   if (kind != AntennaSweep::Kind::kRotating) {
     for (const PlotScan& waited : waiting_) snapshot(waited, tracker);

@@ -168,7 +168,7 @@ void PointTracker::start_frame(const PlotScan& scan, TrackFrame& frame) const {
   frame.sensor = scan.sensor;
   frame.scan = scan.scan;
   frame.time = scan.time;
-  frame.tracks.clear();
+  // frame.tracks keeps its elements (and their storage) for report_tracks to overwrite.
   frame.associations.clear();
   frame.events.clear();
 }
@@ -908,6 +908,7 @@ void PointTracker::number_confirmed(TrackFrame& frame) {
 void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& frame) {
   const int dims = layout_.dims;
   const int n = 2 * dims;
+  std::size_t reported = 0;
   for (const PointTrack& track : tracks_) {
     if (track.branch != BranchType::kFather) {  // sons and grandsons are internal
       if (track.life.status != TrackStatus::kDeleted) ++report.branches;
@@ -920,7 +921,14 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
     const ImmEstimate at_time =
         track.estimate.time < time ? filter_.predict(track.estimate, time) : track.estimate;
     const Gaussian g = filter_.combine(at_time);
-    TrackReport out;
+    // Written over the frame's earlier report in this place: its vectors keep their storage.
+    TrackReport& out =
+        reported < frame.tracks.size() ? frame.tracks[reported] : frame.tracks.emplace_back();
+    ++reported;
+    out.kind = ObjectKind::kPoint;
+    out.extent.reset();
+    out.members.reset();
+    out.modes.clear();
     out.id = track.id;
     out.status = track.life.status;
     out.dims = dims;
@@ -936,7 +944,6 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
       out.modes.emplace_back(names[m], at_time.probabilities[static_cast<Eigen::Index>(m)]);
     }
     out.quality = track.quality;
-    frame.tracks.push_back(std::move(out));
     switch (track.life.status) {
       case TrackStatus::kTentative:
         ++report.tentative;
@@ -952,6 +959,7 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
         break;
     }
   }
+  frame.tracks.resize(reported);
   // Deleted tracks are reported once, in the batch that deletes them.
   std::erase_if(tracks_,
                 [](const PointTrack& t) { return t.life.status == TrackStatus::kDeleted; });

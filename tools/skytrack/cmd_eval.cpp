@@ -16,6 +16,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "commands.hpp"
 #include "eval_identity.hpp"
@@ -277,9 +278,10 @@ std::string summary_json(const metrics::EvaluationSummary& s, const EvalOptions&
     const metrics::TruthContinuity& t = s.continuity[i];
     json += fmt::format(
         "{}{{\"truth\": {}, \"frames_present\": {}, \"frames_tracked\": {}, "
-        "\"id_changes\": {}, \"fragmentations\": {}, \"distinct_tracks\": {}}}",
+        "\"id_changes\": {}, \"fragmentations\": {}, \"distinct_tracks\": {}, "
+        "\"tracks\": [{}]}}",
         i == 0 ? "" : ", ", t.truth_id, t.frames_present, t.frames_tracked, t.id_changes,
-        t.fragmentations, t.distinct_tracks);
+        t.fragmentations, t.distinct_tracks, fmt::join(t.tracks, ", "));
   }
   return json + "]}";
 }

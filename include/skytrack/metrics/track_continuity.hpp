@@ -20,6 +20,7 @@ struct TruthContinuity {
   int id_changes = 0;
   int fragmentations = 0;
   int distinct_tracks = 0;                 // number of different track ids matched over time
+  std::vector<std::int64_t> tracks;        // those ids, in the order first matched
   std::optional<std::int64_t> last_track;  // last matched track id
   bool tracked_now = false;                // matched in its latest frame
 };

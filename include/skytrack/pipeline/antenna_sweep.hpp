@@ -28,8 +28,6 @@ class AntennaSweep {
   /// their own makes the sensor a snapshot sensor; so do pairs of plots that never agree on
   /// a rate.
   Kind read(const PlotScan& scan);
-  /// Gives up learning: the sensor is a snapshot sensor.
-  void give_up();
   Kind kind() const { return kind_; }
 
   /// Each plot's sweep (batch order), for a rotating antenna's batches in arrival order. The

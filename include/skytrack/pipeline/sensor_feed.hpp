@@ -34,6 +34,7 @@ class SensorFeed {
   AntennaSweep antenna_;
   LookAssembler looks_;
   std::vector<PlotScan> waiting_;  // while the antenna's kind is learnt
+  bool waited_out_ = false;        // learning took too long: batches go on as they come
   // The sweep the sensor's looks have reached [rad]: a revolution per snapshot look, the
   // antenna's own once it is known to rotate (tracks compare the two).
   double clock_ = 0.0;
