@@ -6,8 +6,8 @@
 // non-manoeuvre gate (CV, 1 m/s^2, P_G 0.999) is a few tens of metres wide; the manoeuvre
 // gate (CV, 100 m/s^2, P_G 0.9999) about 250 m, so a plot 150 m off the prediction lies
 // in the manoeuvre gate only.
-#include <cctype>
 #include <algorithm>
+#include <cctype>
 #include <limits>
 #include <string>
 #include <vector>
@@ -131,8 +131,9 @@ struct Script {
     return out;
   }
   bool associated(std::int64_t track, std::int64_t plot) const {
-    return std::any_of(frame.associations.begin(), frame.associations.end(),
-                       [&](const Association& a) { return shown(a.track) == track && a.plot == plot; });
+    return std::any_of(
+        frame.associations.begin(), frame.associations.end(),
+        [&](const Association& a) { return shown(a.track) == track && a.plot == plot; });
   }
   /// The probability of the association (track, plot) in the latest frame (0 if none).
   double probability(std::int64_t track, std::int64_t plot) const {
@@ -1072,8 +1073,8 @@ TEST(BranchTracker, ConfirmedSonWaitsUntilItsSupportPassesItsFathers) {
   // hidden and the father keeps the number
   EXPECT_TRUE(s.associated(2, 501));
   const auto& tracks = s.tracker.tracks();
-  const auto son =
-      std::find_if(tracks.begin(), tracks.end(), [](const PointTrack& t) { return shown(t.id) == 2; });
+  const auto son = std::find_if(tracks.begin(), tracks.end(),
+                                [](const PointTrack& t) { return shown(t.id) == 2; });
   ASSERT_NE(son, tracks.end());
   EXPECT_EQ(son->life.status, TrackStatus::kConfirmed);
   EXPECT_LT(s.support(2), s.support(1));

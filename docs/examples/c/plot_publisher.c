@@ -56,9 +56,9 @@ int main(int argc, char** argv) {
   for (int k = 0; k < batches; ++k) {
     const double t = (double)k, x = -2000.0 + 200.0 * t, y = 20000.0;
     memset(values, 0, sizeof values);
-    values[0] = t;                  /* plot time [s] */
+    values[0] = t;                   /* plot time [s] */
     values[1] = sqrt(x * x + y * y); /* range [m] */
-    values[2] = atan2(x, y);        /* azimuth [rad], clockwise from north */
+    values[2] = atan2(x, y);         /* azimuth [rad], clockwise from north */
     if (values[2] < 0) values[2] += 2.0 * M_PI;
     batch.scan = (unsigned long long)k;
     batch.time = t;

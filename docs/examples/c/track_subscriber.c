@@ -47,8 +47,7 @@ int main(int argc, char** argv) {
         if (track->status == skytrack_dds_TRACK_CONFIRMED && first == NULL) first = track;
       }
       printf("scan %llu t=%.1f: %u tentative, %u confirmed, %u coasting",
-             (unsigned long long)b->scan, b->time,
-             by_status[0], by_status[1], by_status[2]);
+             (unsigned long long)b->scan, b->time, by_status[0], by_status[1], by_status[2]);
       if (first != NULL) {
         printf("; track %lld at (%.0f, %.0f) m", (long long)first->id, first->position[0],
                first->position[1]);

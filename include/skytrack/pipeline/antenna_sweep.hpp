@@ -66,7 +66,7 @@ class AntennaSweep {
   double rate_ = 0.0;  // [rad/s]
   int sense_ = 0;
   std::vector<double> rates_;   // signed rate samples [rad/s] while learning
-  std::size_t samples_ = 0;      // rate samples read in all
+  std::size_t samples_ = 0;     // rate samples read in all
   std::optional<Sample> last_;  // the latest plot seen (time order)
   double latest_time_ = 0.0, latest_sweep_ = 0.0;
   bool anchored_ = false;
