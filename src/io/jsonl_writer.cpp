@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iterator>
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include "skytrack/core/transponder.hpp"
@@ -16,10 +17,12 @@ namespace {
 using Buffer = fmt::memory_buffer;
 
 void put_number(Buffer& out, double value) {
+  // The compiled "{}" writes what the run-time one does, without parsing the format per
+  // number (a frame holds thousands: every track's covariance).
   if (std::isfinite(value)) {
-    fmt::format_to(std::back_inserter(out), "{}", value);
+    fmt::format_to(fmt::appender(out), FMT_COMPILE("{}"), value);
   } else {
-    fmt::format_to(std::back_inserter(out), "null");
+    out.append(std::string_view("null"));
   }
 }
 

@@ -87,7 +87,14 @@ void PointTracker::number_confirmed(TrackFrame& frame) {
     for (Association& a : frame.associations) {
       if (a.track == provisional) a.track = track.id;
     }
+    const std::string old_name = "track " + std::to_string(provisional);
+    const std::string new_name = "track " + std::to_string(track.id);
     for (TrackEvent& e : frame.events) {
+      // This look's events name it by its number too ("son ... of track N").
+      for (std::size_t at = e.detail.find(old_name); at != std::string::npos;
+           at = e.detail.find(old_name, at + new_name.size())) {
+        e.detail.replace(at, old_name.size(), new_name);
+      }
       if (e.track != provisional) continue;
       e.track = track.id;
       if (e.type == "confirmed") e.detail = "tentative " + std::to_string(provisional);
