@@ -15,6 +15,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "cli_runner.hpp"
+
 #include "skytrack/geometry/angles.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
 
@@ -23,23 +25,10 @@ namespace {
 
 using ::testing::HasSubstr;
 
-struct RunResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
+using skytrack::testing::RunResult;
 
 RunResult run(const std::string& arguments) {
-  const std::string command = std::string(SKYTRACK_TOOL) + " " + arguments + " 2>&1";
-  RunResult result;
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe.get())) > 0) {
-    result.output.append(buffer.data(), n);
-  }
-  const int status = pclose(pipe.release());
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+  return skytrack::testing::run_skytrack(arguments);
 }
 
 const std::string kInput =
