@@ -43,8 +43,10 @@ std::string restart_reason(const config::TrackingProfile& a, const config::Track
   differs(a.mode == b.mode, "mode");
   differs(a.dimension == b.dimension, "dimension");
   differs(a.measurement == b.measurement, "measurement");
+  differs(a.antenna == b.antenna, "antenna");
   differs(a.motion_models == b.motion_models, "motion_models");
   differs(a.mode_transition == b.mode_transition, "mode_transition");
+  differs(a.mode_transition_interval == b.mode_transition_interval, "mode_transition_interval");
   differs(a.initial_mode_probabilities == b.initial_mode_probabilities,
           "initial_mode_probabilities");
   differs(a.association == b.association, "association");

@@ -63,5 +63,17 @@ TEST(ProfileReload, OnlyAnIdentityChangeKeepsTheTracks) {
   EXPECT_EQ(restart_reason(before, tuned), "dimension, association");
 }
 
+TEST(ProfileReload, AnAntennaOrModeTransitionIntervalChangeRestartsTheTracks) {
+  // GIVEN a profile whose antenna is described, or whose Markov interval changes
+  config::TrackingProfile before;
+  config::TrackingProfile antenna = before;
+  antenna.antenna.period = 4.8;
+  config::TrackingProfile interval = before;
+  interval.mode_transition_interval = 10.0;
+  // THEN either restarts the tracks (their looks and mode switching depend on them)
+  EXPECT_EQ(restart_reason(before, antenna), "antenna");
+  EXPECT_EQ(restart_reason(before, interval), "mode_transition_interval");
+}
+
 }  // namespace
 }  // namespace skytrack::daemon
