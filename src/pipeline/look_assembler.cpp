@@ -82,11 +82,13 @@ bool LookAssembler::take(std::span<const AzimuthSpan> spans, const AntennaSweep&
 
 void LookAssembler::take_all(Look& look) {
   if (headers_.empty()) return;
-  release(std::max(reached_, from_), look);
-  for (const double s : look.sweep) from_ = std::max(from_, s);
+  double end = std::max(reached_, from_);
+  for (const Held& h : held_) end = std::max(end, h.sweep);
+  release(end, look);
   look.scan.coverage.reset();
   look.whole = true;
-  from_ = std::max(from_, reached_);
+  from_ = end;
+  reached_ = end;
 }
 
 void LookAssembler::release(double c, Look& look) {

@@ -121,7 +121,12 @@ void SensorFeed::feed_rotating(const PlotScan& batch, PointTracker& tracker) {
   // A batch that swept three quarters of a revolution or more by itself comes from a feed that
   // delivers revolutions: it is one look at everything, as it came (and the plots still held go
   // with it).
-  const bool revolution = looks_.started() && reached - looks_.reached() >= 1.5 * std::numbers::pi;
+  double before = looks_.reached();
+  if (!looks_.started()) {  // the first batch: from its first plot on
+    before = reached;
+    for (const double sweep : sweeps_) before = std::min(before, sweep);
+  }
+  const bool revolution = reached - before >= 1.5 * std::numbers::pi;
   looks_.add(batch, sweeps_, reached);
   if (revolution) {
     looks_.take_all(look_);
