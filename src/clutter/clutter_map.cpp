@@ -11,6 +11,7 @@ namespace {
 
 constexpr int kExtra = kMaxMeasurementDim - 2;  // components after the mapped two
 constexpr int kMinForSpread = 5;                // plots needed to trust a block's spread
+constexpr double kMaxCells = 1 << 26;           // per axis, within the key's 28 bits
 
 struct Cell {
   std::int64_t a = 0, b = 0;
@@ -44,8 +45,10 @@ struct Grid {
   Grid(const PlotMeasurement& p, const ClutterMapCells& cells) {
     if (is_polar(p.model.kind)) {
       size_a = cells.range;
-      wrap_b = std::max<std::int64_t>(
-          3, static_cast<std::int64_t>(std::ceil(2.0 * std::numbers::pi / cells.azimuth)));
+      // Clamped before the cast: a cell far finer than any radar's (the loader refuses it)
+      // must not overflow.
+      wrap_b = static_cast<std::int64_t>(
+          std::clamp(std::ceil(2.0 * std::numbers::pi / cells.azimuth), 3.0, kMaxCells));
       size_b = 2.0 * std::numbers::pi / static_cast<double>(wrap_b);
     } else {
       size_a = size_b = cells.cartesian;
@@ -53,8 +56,12 @@ struct Grid {
   }
   Cell cell_of(const PlotMeasurement& p) const {
     const double b = wrap_b > 0 ? p.z[1] + std::numbers::pi : p.z[1];
-    return {static_cast<std::int64_t>(std::floor(p.z[0] / size_a)),
-            wrapped(static_cast<std::int64_t>(std::floor(b / size_b)))};
+    return {index(p.z[0] / size_a), wrapped(index(b / size_b))};
+  }
+  // A cell index, clamped before the cast: a position far beyond any radar's reach (the
+  // edges reject such plots; the map must not overflow on one that slips through).
+  static std::int64_t index(double cells) {
+    return static_cast<std::int64_t>(std::clamp(std::floor(cells), -kMaxCells, kMaxCells));
   }
   std::int64_t wrapped(std::int64_t b) const {
     return wrap_b > 0 ? ((b % wrap_b) + wrap_b) % wrap_b : b;

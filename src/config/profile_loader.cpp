@@ -198,9 +198,11 @@ AssociationSpec read_association(YamlSection s) {
   read_clutter_density(s, a.clutter_density);
   YamlSection map = s.section("clutter_map");
   map.boolean("enabled", a.clutter_map.enabled);
-  map.number("range_cell", a.clutter_map.range_cell, Range::positive());
-  map.number("azimuth_cell", a.clutter_map.azimuth_cell, Range::positive());
-  map.number("cartesian_cell", a.clutter_map.cartesian_cell, Range::positive());
+  // Physical bounds: a metre to a thousand kilometres, a hundredth of a degree to a half
+  // revolution (finer cells than any radar resolves would only overflow the map's indices).
+  map.number("range_cell", a.clutter_map.range_cell, Range{1.0, 1e6});
+  map.number("azimuth_cell", a.clutter_map.azimuth_cell, Range{1.7e-4, 3.15});
+  map.number("cartesian_cell", a.clutter_map.cartesian_cell, Range{1.0, 1e6});
   if (a.clutter_map.enabled && a.clutter_density) {
     map.error("enabled",
               "the clutter map refines clutter_density: auto; it cannot be on with "

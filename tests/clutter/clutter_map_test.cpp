@@ -154,6 +154,22 @@ TEST(ClutterMap, PlotsSharingOneFlightLevelSpreadAtLeastTheirOwnHeightNoise) {
   EXPECT_NEAR(d[0], 2.0 / (area * std::sqrt(12.0) * 30.0), 1e-9 * d[0]);
 }
 
+TEST(ClutterMap, PositionsAndCellsFarBeyondAnyRadarDoNotOverflowTheCells) {
+  // GIVEN finite but absurd plots (1e23 m: a corrupted range or x) beside ordinary ones, and
+  // cells far finer than any radar's
+  Batch b;
+  b.add(polar(4.6e23, 0.1, 0.0));
+  b.add(polar(-1e300, -0.1, 0.0));
+  b.add(cartesian(1e30, -1e30));
+  for (int i = 0; i < 20; ++i) b.add(polar(50e3 + 100.0 * i, 0.01 * i, 0.0));
+  // WHEN the map counts them (under UBSan a float-to-integer overflow would abort)
+  const std::vector<double> d = b.densities({.range = 1e-20, .azimuth = 1e-20, .cartesian = 1e-20});
+  const std::vector<double> ordinary = b.densities();
+  // THEN every density is finite and not negative
+  for (const double v : d) EXPECT_TRUE(std::isfinite(v) && v >= 0.0);
+  for (const double v : ordinary) EXPECT_TRUE(std::isfinite(v) && v >= 0.0);
+}
+
 TEST(ClutterMap, CartesianPlotsAreCountedOverTheirBlockArea) {
   // 90 plots spread over one 3 x 3 block of 1 km cells, plus one plot far away.
   Batch b;

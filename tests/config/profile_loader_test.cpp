@@ -139,9 +139,17 @@ TEST(ProfileLoader, ClutterMapNeedsAutoDensity) {
             "auto; it cannot be on with a fixed clutter_density");
 }
 
-TEST(ProfileLoader, ClutterMapCellsArePositive) {
-  EXPECT_EQ(error_of("association:\n  clutter_map: {enabled: true, azimuth_cell: 0}\n"),
-            "p.yaml:4: association.clutter_map.azimuth_cell: expected a number > 0, got 0");
+TEST(ProfileLoader, ClutterMapCellsHavePhysicalBounds) {
+  // GIVEN cells no radar resolves (zero, or positive but tiny: they would overflow the map's
+  // cell indices) or wider than any coverage; THEN the loader refuses each, naming it
+  EXPECT_THAT(error_of("association:\n  clutter_map: {enabled: true, azimuth_cell: 0}\n"),
+              HasSubstr("p.yaml:4: association.clutter_map.azimuth_cell: expected a number in"));
+  EXPECT_THAT(error_of("association:\n  clutter_map: {azimuth_cell: 1e-20}\n"),
+              HasSubstr("association.clutter_map.azimuth_cell: expected a number in"));
+  EXPECT_THAT(error_of("association:\n  clutter_map: {range_cell: 1e-20}\n"),
+              HasSubstr("association.clutter_map.range_cell: expected a number in"));
+  EXPECT_THAT(error_of("association:\n  clutter_map: {cartesian_cell: 1e9}\n"),
+              HasSubstr("association.clutter_map.cartesian_cell: expected a number in"));
 }
 
 TEST(ProfileLoader, KeyOfAnotherModelTypeIsUnknown) {
