@@ -10,6 +10,9 @@ Expected<simdjson::dom::element> parse_json_line(std::string_view line, std::siz
   const bool padded = capacity >= line.size() + simdjson::SIMDJSON_PADDING;
   const auto error = parser.parse(line.data(), line.size(), !padded).get(root);
   if (error != simdjson::SUCCESS) {
+    // After a failure (a failed allocation above all) the parser's state is not to be
+    // trusted: the next line gets a new one.
+    parser = simdjson::dom::parser{};
     return make_error(std::string("invalid JSON: ") + simdjson::error_message(error));
   }
   return root;

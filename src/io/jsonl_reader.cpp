@@ -1,6 +1,8 @@
 #include "skytrack/io/jsonl_reader.hpp"
 
+#include <array>
 #include <filesystem>
+#include <limits>
 #include <system_error>
 
 #include "json_parser.hpp"
@@ -35,10 +37,16 @@ std::string to_string(const LineError& error) {
 
 template <class Record>
 Expected<JsonLinesReader<Record>> JsonLinesReader<Record>::open(const std::string& path,
-                                                                ErrorSink on_error) {
+                                                                ErrorSink on_error,
+                                                                std::size_t max_line) {
   JsonLinesReader reader;
   reader.path_ = path;
   reader.on_error_ = std::move(on_error);
+  reader.max_line_ = max_line;
+  std::error_code directory;
+  if (std::filesystem::is_directory(path, directory)) {
+    return make_error(path + ": is a directory, not a JSON Lines file");
+  }
   reader.in_ = std::make_unique<std::ifstream>(path, std::ios::binary);
   if (!*reader.in_) return make_error(path + ": cannot open for reading");
   std::error_code ec;
@@ -48,12 +56,63 @@ Expected<JsonLinesReader<Record>> JsonLinesReader<Record>::open(const std::strin
 }
 
 template <class Record>
+bool JsonLinesReader<Record>::read_line(bool& too_long) {
+  // In chunks, so that a line longer than max_line_ is skipped without being held whole.
+  too_long = false;
+  line_.clear();
+  std::array<char, 1 << 16> chunk;
+  bool any = false;
+  for (;;) {
+    in_->getline(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    const auto got = static_cast<std::size_t>(in_->gcount());
+    if (in_->bad()) {
+      read_error_ = path_ + ": read error after " + std::to_string(bytes_read_) + " bytes";
+      return false;
+    }
+    bytes_read_ += got;
+    any = any || got > 0;
+    if (in_->eof()) {  // the last line, without a newline (or nothing left)
+      line_.append(chunk.data(), got);
+      return any;
+    }
+    if (!in_->fail()) {  // the newline was taken out, not stored
+      line_.append(chunk.data(), got - 1);
+      return true;
+    }
+    // The chunk filled before the newline: more of this line follows.
+    in_->clear();
+    line_.append(chunk.data(), got);
+    if (line_.size() > max_line_) {
+      too_long = true;
+      line_.clear();
+      in_->ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+      bytes_read_ += static_cast<std::size_t>(in_->gcount());
+      if (in_->bad()) {
+        read_error_ = path_ + ": read error after " + std::to_string(bytes_read_) + " bytes";
+        return false;
+      }
+      return true;
+    }
+  }
+}
+
+template <class Record>
 std::optional<Record> JsonLinesReader<Record>::next() {
   std::vector<std::string> rejected_plots;
   std::size_t line_number = counts_.lines + counts_.blank_lines;
-  while (std::getline(*in_, line_)) {
+  bool too_long = false;
+  while (read_line(too_long)) {
     ++line_number;
-    bytes_read_ += line_.size() + 1;
+    if (too_long) {
+      ++counts_.lines;
+      ++counts_.rejected_lines;
+      if (on_error_) {
+        on_error_(
+            LineError{path_, line_number,
+                      "line longer than " + std::to_string(max_line_) + " bytes: skipped unread"});
+      }
+      continue;
+    }
     if (!line_.empty() && line_.back() == '\r') line_.pop_back();
     if (line_.find_first_not_of(" \t") == std::string::npos) {
       ++counts_.blank_lines;

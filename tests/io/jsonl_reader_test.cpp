@@ -57,5 +57,40 @@ TEST(JsonLinesReader, FailsToOpenAMissingFileWithItsName) {
   EXPECT_THAT(reader.error().message, HasSubstr("/nonexistent/truth.jsonl"));
 }
 
+TEST(JsonLinesReader, RefusesADirectoryInsteadOfReadingNothing) {
+  // GIVEN a directory named as the plot stream; THEN opening it fails, naming it (it used to
+  // read as an empty file: "0 batches", exit 0)
+  const auto reader = PlotStreamReader::open(std::filesystem::temp_directory_path().string());
+  ASSERT_FALSE(reader);
+  EXPECT_THAT(reader.error().message, HasSubstr("is a directory"));
+}
+
+TEST(JsonLinesReader, SkipsALineLongerThanTheLimitUnreadAndReadsOn) {
+  // GIVEN a good line, a line of 300 kB (the limit set to 100 kB), a line that is not JSON
+  // and another good line
+  const std::string good = "{\"sensor\":0,\"scan\":0,\"time\":0,\"plots\":[]}\n";
+  const std::string later = "{\"sensor\":0,\"scan\":1,\"time\":1,\"plots\":[]}\n";
+  const std::string path = write_temp("skytrack_reader_long.plots.jsonl",
+                                      good + std::string(300000, 'x') + "\n" + "{]\n" + later);
+  std::vector<LineError> errors;
+  auto reader = PlotStreamReader::open(
+      path, [&](const LineError& e) { errors.push_back(e); }, 100000);
+  ASSERT_TRUE(reader);
+  // WHEN it is read to the end
+  std::vector<PlotScan> scans;
+  while (auto scan = reader->next()) scans.push_back(std::move(*scan));
+  // THEN the long line is rejected with its number, unread, and the parser, after the bad
+  // line, reads the next good one
+  ASSERT_EQ(scans.size(), 2u);
+  EXPECT_EQ(scans[1].scan, 1u);
+  ASSERT_EQ(errors.size(), 2u);
+  EXPECT_EQ(errors[0].line, 2u);
+  EXPECT_THAT(errors[0].reason, HasSubstr("longer than 100000 bytes"));
+  EXPECT_EQ(errors[1].line, 3u);
+  EXPECT_FALSE(reader->read_error());
+  EXPECT_EQ(reader->bytes_read(), reader->file_size());
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace skytrack::io

@@ -20,10 +20,10 @@
 
 #include "commands.hpp"
 #include "eval_identity.hpp"
-#include "track_frame_matcher.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
 #include "skytrack/io/svg_plot.hpp"
 #include "skytrack/metrics/scenario_evaluation.hpp"
+#include "track_frame_matcher.hpp"
 
 namespace skytrack::tool {
 namespace {
@@ -349,6 +349,14 @@ int run_eval(const EvalOptions& options) {
     if (plot) plot->add(*truth, tracks, record);
   }
   matcher.finish();
+  for (const auto* error :
+       {&truth_reader->read_error(), track_reader ? &track_reader->read_error() : nullptr,
+        truth_as_tracks ? &truth_as_tracks->read_error() : nullptr}) {
+    if (error != nullptr && *error) {
+      fmt::print(stderr, "skytrack eval: {}\n", **error);
+      return 2;
+    }
+  }
 
   counts.truth_rejected = truth_reader->counts().rejected_lines;
   counts.track_rejected = track_reader ? track_reader->counts().rejected_lines

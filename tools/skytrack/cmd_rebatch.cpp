@@ -113,6 +113,10 @@ int run_rebatch(const RebatchOptions& options) {
     auto it = batchers.try_emplace(scan->sensor, options, *writer).first;
     ok = it->second.add(*scan) && ok;
   }
+  if (reader->read_error()) {
+    fmt::print(stderr, "skytrack rebatch: {}\n", *reader->read_error());
+    return 2;
+  }
   for (auto& [sensor, batcher] : batchers) ok = batcher.flush() && ok;
   ok = writer->close() && ok;
   if (!ok) {

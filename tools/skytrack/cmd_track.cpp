@@ -106,6 +106,10 @@ int run_track(const TrackOptions& options) {
     progress.update(reader->bytes_read(), reader->file_size(), latency_ms.size());
   }
   progress.finish();
+  if (reader->read_error()) {
+    fmt::print(stderr, "skytrack track: {}\n", *reader->read_error());
+    return 2;
+  }
   if (!writer->close()) {
     fmt::print(stderr, "skytrack track: writing {} failed\n", options.out);
     return 2;

@@ -81,6 +81,10 @@ int run_eval_identity(const IdentityOptions& options) {
                        p.x(), p.y(), (p - scan->platform.position).norm(), std::nullopt});
     }
   }
+  if (plot_reader->read_error()) {
+    fmt::print(stderr, "skytrack eval: {}\n", *plot_reader->read_error());
+    return 2;
+  }
   // Each plot's track: the confirmed or coasting one likeliest to hold it in its batch.
   std::map<PlotKey, double> best;
   std::size_t unknown = 0;
@@ -101,6 +105,10 @@ int run_eval_identity(const IdentityOptions& options) {
       it->second = a.probability;
       plots[at->second].track = a.track;
     }
+  }
+  if (track_reader->read_error()) {
+    fmt::print(stderr, "skytrack eval: {}\n", *track_reader->read_error());
+    return 2;
   }
   if (unknown > 0) {
     fmt::print(stderr, "skytrack eval: {} associations name no plot of {}\n", unknown,

@@ -48,15 +48,24 @@ struct ReadCounts {
 
 using ErrorSink = std::function<void(const LineError&)>;
 
+/// The longest line a reader takes [bytes]: 16 MiB, a batch of about 250 000 plots (the
+/// daemon's own limit is 100 000). A longer line is rejected with its number, unread.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{16} << 20;
+
 /// Reads records of type Record from a JSON Lines file, line by line.
 template <class Record>
 class JsonLinesReader {
  public:
-  /// Opens `path`; fails with a message naming the file if it cannot be read.
-  static Expected<JsonLinesReader> open(const std::string& path, ErrorSink on_error = {});
+  /// Opens `path`; fails with a message naming the file if it cannot be read (a directory
+  /// cannot).
+  static Expected<JsonLinesReader> open(const std::string& path, ErrorSink on_error = {},
+                                        std::size_t max_line = kMaxLineBytes);
 
-  /// The next valid record, or nullopt at end of file. Bad lines go to the error sink.
+  /// The next valid record, or nullopt at the end of the file or at a read error
+  /// (read_error() tells). Bad lines go to the error sink.
   std::optional<Record> next();
+  /// Why reading stopped before the end of the file, if it did.
+  const std::optional<std::string>& read_error() const { return read_error_; }
 
   const ReadCounts& counts() const { return counts_; }
   const std::string& path() const { return path_; }
@@ -73,6 +82,11 @@ class JsonLinesReader {
   ReadCounts counts_;
   std::size_t bytes_read_ = 0;
   std::size_t file_size_ = 0;
+  std::size_t max_line_ = kMaxLineBytes;
+  std::optional<std::string> read_error_;
+  /// Reads one line into line_ (at most max_line_ bytes); false at the end or on an error.
+  /// `too_long`: the line was longer and was skipped.
+  bool read_line(bool& too_long);
 };
 
 using PlotStreamReader = JsonLinesReader<PlotScan>;
