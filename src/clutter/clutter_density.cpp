@@ -56,7 +56,7 @@ void ClutterDensity::forget(std::vector<Seen>& window, double latest) const {
 
 void ClutterDensity::estimate(std::uint32_t sensor, bool windowed,
                               std::span<const PlotMeasurement> plots,
-                              std::span<const std::uint8_t> rejected,
+                              std::span<const std::uint8_t> boxed,
                               std::span<const std::uint8_t> counted, std::vector<double>& density) {
   const std::size_t n = plots.size();
   std::vector<Seen>* window = nullptr;
@@ -68,9 +68,7 @@ void ClutterDensity::estimate(std::uint32_t sensor, bool windowed,
     if (window->empty()) window = nullptr;
   }
   if (window == nullptr) {  // the look's own plots
-    all_used_.resize(n);
-    for (std::size_t j = 0; j < n; ++j) all_used_[j] = rejected[j] ? 0 : 1;
-    box_density(plots, all_used_, density);
+    box_density(plots, boxed, density);
     if (map_enabled_) raise_to_local_density(plots, counted, cells_, density);
     return;
   }
@@ -81,13 +79,13 @@ void ClutterDensity::estimate(std::uint32_t sensor, bool windowed,
   for (const Seen& s : *window) {
     all_.push_back(s.plot);
     all_counted_.push_back(s.counted);
-    all_used_.push_back(1);
+    all_used_.push_back(s.boxed);
   }
   const std::size_t first = all_.size();
   for (std::size_t j = 0; j < n; ++j) {
     all_.push_back(plots[j]);
     all_counted_.push_back(map_enabled_ ? counted[j] : 0);
-    all_used_.push_back(rejected[j] ? 0 : 1);
+    all_used_.push_back(boxed[j]);
   }
   box_density(all_, all_used_, all_density_);
   if (map_enabled_) raise_to_local_density(all_, all_counted_, cells_, all_density_);
@@ -96,11 +94,13 @@ void ClutterDensity::estimate(std::uint32_t sensor, bool windowed,
 
 void ClutterDensity::remember(std::uint32_t sensor, std::span<const PlotMeasurement> plots,
                               std::span<const std::uint8_t> rejected,
+                              std::span<const std::uint8_t> boxed,
                               std::span<const std::uint8_t> counted) {
   std::vector<Seen>& window = windows_[sensor];
   for (std::size_t j = 0; j < plots.size(); ++j) {
     if (rejected[j]) continue;
-    window.push_back({plots[j], map_enabled_ && !counted.empty() ? counted[j] : std::uint8_t{0}});
+    window.push_back(
+        {plots[j], map_enabled_ && !counted.empty() ? counted[j] : std::uint8_t{0}, boxed[j]});
   }
 }
 

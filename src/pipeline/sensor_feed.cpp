@@ -19,6 +19,7 @@ void add_look(ScanReport& total, const ScanReport& look) {
   total.plots += look.plots;
   total.plots_invalid += look.plots_invalid;
   total.plots_rejected_clutter += look.plots_rejected_clutter;
+  total.plots_in_clouds += look.plots_in_clouds;
   total.tentative = look.tentative;
   total.confirmed = look.confirmed;
   total.coasting = look.coasting;

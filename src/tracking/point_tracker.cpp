@@ -37,6 +37,10 @@ constexpr double kAssociationReportThreshold = 1e-3;
 // (wide gates, chained in dense clutter) get a cheaper exact attempt and fewer joint events.
 constexpr int kManoeuvreKBest = 10;
 constexpr std::int64_t kManoeuvreExactStates = std::int64_t{1} << 12;
+// A plot cloud: more than this many other plots within this many of a plot's position
+// sigmas in one look (a formation of a few aircraft is not one).
+constexpr int kCloudPlots = 16;
+constexpr double kCloudSigmas = 5.0;
 // Height spread of a track started from plots without height [m].
 constexpr double kUnknownHeightSigma = 3000.0;
 // Acceleration spread of a new track, where the layout has acceleration states [m/s^2].
@@ -208,7 +212,11 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
     }
   }
   report_tracks(scan.time, report, frame);
-  if (windowed_) density_.remember(sensor_, plots_, rejected_, clutter_counted_);
+  if (windowed_) {
+    boxed_.resize(plots_.size());
+    for (std::size_t j = 0; j < plots_.size(); ++j) boxed_[j] = rejected_[j] || crowd_[j] ? 0 : 1;
+    density_.remember(sensor_, plots_, rejected_, boxed_, clutter_counted_);
+  }
   report.manage = since(start);
 }
 
@@ -287,6 +295,7 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
         return is_polar(p.model.kind) && !measures_height(p);
       });
   index_.build(positions_, heightless ? 2 : layout_.dims);
+  find_plot_clouds();
   candidates_.clear();
   manoeuvre_candidates_.clear();
   // branching.last_motion_false_plots weighs the clutter round each plot while gating: from
@@ -784,10 +793,34 @@ bool PointTracker::free_for_initiation(std::size_t j) const {
   return gated_[j] == 0 || held_[j] == 0;
 }
 
+void PointTracker::find_plot_clouds() {
+  // Many plots within a few of a plot's position sigmas in one look: chaff, a jammer's false
+  // plots, a swarm too dense to resolve. No chain can tell a target there from the rest, and
+  // a chain per plot would cost the square of the crowd in tracks and gates.
+  crowd_.assign(plots_.size(), 0);
+  for (std::size_t j = 0; j < plots_.size(); ++j) {
+    crowd_[j] =
+        index_.more_than(positions_[j], kCloudSigmas * position_sigma(plots_[j]), kCloudPlots);
+  }
+}
+
 void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame) {
   std::vector<PlotMeasurement> unused;
+  int clouded = 0;
   for (std::size_t j = 0; j < plots_.size(); ++j) {
-    if (free_for_initiation(j)) unused.push_back(plots_[j]);
+    if (!free_for_initiation(j)) continue;
+    if (crowd_[j]) {
+      ++clouded;
+      continue;
+    }
+    unused.push_back(plots_[j]);
+  }
+  if (clouded > 0) {
+    report.plots_in_clouds += clouded;
+    add_event(frame, "plot_cloud", 0,
+              std::to_string(clouded) + " plots in clouds start no track (more than " +
+                  std::to_string(kCloudPlots) + " plots within " +
+                  std::to_string(static_cast<int>(kCloudSigmas)) + " position sigmas)");
   }
   const auto covered = [&](const Eigen::Vector3d& p) { return covers(scan, p); };
   if (branching()) {
@@ -913,7 +946,9 @@ void PointTracker::estimate_clutter_density() {
       if (is_reported_as_firm(tracks_[c.track].life.status)) clutter_counted_[c.plot] = 0;
     }
   }
-  density_.estimate(sensor_, windowed_, plots_, rejected_, clutter_counted_, auto_density_);
+  boxed_.resize(plots_.size());
+  for (std::size_t j = 0; j < plots_.size(); ++j) boxed_[j] = rejected_[j] || crowd_[j] ? 0 : 1;
+  density_.estimate(sensor_, windowed_, plots_, boxed_, clutter_counted_, auto_density_);
 }
 
 }  // namespace skytrack

@@ -25,21 +25,25 @@ class ClutterDensity {
   explicit ClutterDensity(std::optional<ClutterMapCells> map);
 
   /// Per plot of the look, its density in its measurement space, or 0 where a form has too few
-  /// plots to say (the caller's fallback applies). `rejected` plots are not counted; the map
-  /// counts only `counted` ones (the plots no firm track gates: the false ones). `windowed`:
-  /// the look is part of a rotating antenna's revolution (plots carry their sweep).
+  /// plots to say (the caller's fallback applies). The box counts the `boxed` plots (not the
+  /// rejected ones, nor a plot cloud's, which is local clutter and no measure of the sky);
+  /// the map counts the `counted` ones (the plots no firm track gates: the false ones).
+  /// `windowed`: the look is part of a rotating antenna's revolution (plots carry their
+  /// sweep).
   void estimate(std::uint32_t sensor, bool windowed, std::span<const PlotMeasurement> plots,
-                std::span<const std::uint8_t> rejected, std::span<const std::uint8_t> counted,
+                std::span<const std::uint8_t> boxed, std::span<const std::uint8_t> counted,
                 std::vector<double>& density);
 
   /// Keeps a windowed look's plots (all but the rejected) for the looks that follow.
   void remember(std::uint32_t sensor, std::span<const PlotMeasurement> plots,
-                std::span<const std::uint8_t> rejected, std::span<const std::uint8_t> counted);
+                std::span<const std::uint8_t> rejected, std::span<const std::uint8_t> boxed,
+                std::span<const std::uint8_t> counted);
 
  private:
   struct Seen {
     PlotMeasurement plot;
     std::uint8_t counted = 0;
+    std::uint8_t boxed = 1;
   };
   /// Drops what lies a revolution or more before `latest`.
   void forget(std::vector<Seen>& window, double latest) const;

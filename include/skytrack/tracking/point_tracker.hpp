@@ -52,6 +52,7 @@ struct ScanReport {
   int plots = 0;
   int plots_invalid = 0;           // could not be turned into a measurement
   int plots_rejected_clutter = 0;  // removed by clutter rejection
+  int plots_in_clouds = 0;         // left out of initiation: too many plots round them
   int tentative = 0, confirmed = 0, coasting = 0;
   int initiated = 0, deleted = 0;
   int clusters = 0, largest_cluster = 0, approximated_clusters = 0;
@@ -228,6 +229,9 @@ class PointTracker {
                       std::span<const double> beta);
   /// True when plot j may feed the initiator: in no gate, or in gates but unexplained.
   bool free_for_initiation(std::size_t j) const;
+  /// Marks the plots in plot clouds (crowd_): they start no chain and are no measure of
+  /// the batch-wide clutter density.
+  void find_plot_clouds();
   void initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame);
 
   // Branch tracking (point_tracker_branches.cpp).
@@ -375,6 +379,8 @@ class PointTracker {
   std::vector<PlotMeasurement> plots_;
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> rejected_;
+  std::vector<std::uint8_t> crowd_;  // per plot: in a plot cloud
+  std::vector<std::uint8_t> boxed_;  // per plot: counted by the batch-wide density
   std::vector<std::uint8_t> gated_;
   std::vector<std::uint8_t> dense_;     // per track: a plot round it in_dense_clutter this batch
   std::vector<std::uint8_t> covered_;   // per track: inside this batch's coverage

@@ -1,0 +1,93 @@
+// A plot cloud (chaff, a jammer's false plots, a swarm too dense to resolve): bounded work,
+// and tracks elsewhere unaffected.
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "skytrack/pipeline/pipeline.hpp"
+
+namespace skytrack {
+namespace {
+
+/// Scan k of a snapshot radar at the origin: one aircraft flying outbound at 250 m/s from
+/// 30 km, azimuth 2.0 rad; with `cloud`, from scan 4 to 9 also 3000 plots within about 150 m
+/// of (50 km, 0.5 rad).
+PlotScan scan(int k, bool cloud, std::mt19937_64& rng) {
+  PlotScan s;
+  s.sensor = 1;
+  s.scan = static_cast<std::uint64_t>(k);
+  s.time = 4.0 * k;
+  std::normal_distribution<double> range_noise(0.0, 30.0), azimuth_noise(0.0, 0.002);
+  Plot target;
+  target.id = 0;
+  target.range = 30000.0 + 1000.0 * k + range_noise(rng);
+  target.azimuth = 2.0 + azimuth_noise(rng);
+  s.plots.push_back(target);
+  if (cloud && k >= 4 && k <= 9) {
+    std::normal_distribution<double> spread(0.0, 150.0), turn(0.0, 0.003);
+    for (int i = 1; i <= 3000; ++i) {
+      Plot p;
+      p.id = i;
+      p.range = 50000.0 + spread(rng);
+      p.azimuth = 0.5 + turn(rng);
+      s.plots.push_back(p);
+    }
+  }
+  return s;
+}
+
+std::vector<TrackFrame> run(bool cloud, int* clouded = nullptr, int* most_tracks = nullptr) {
+  config::TrackingProfile profile;
+  profile.identity = {"cloud-test", "1", ""};
+  auto pipeline = Pipeline::create(profile);
+  EXPECT_TRUE(pipeline);
+  std::mt19937_64 target_rng(7), cloud_rng(11);
+  std::vector<TrackFrame> frames;
+  for (int k = 0; k < 14; ++k) {
+    PlotScan s = scan(k, false, target_rng);
+    if (cloud) {  // the same target plot, with the cloud's plots beside it
+      const PlotScan crowd = scan(k, true, cloud_rng);
+      s.plots.insert(s.plots.end(), crowd.plots.begin() + 1, crowd.plots.end());
+    }
+    const ScanResult& result = pipeline->process(s);
+    EXPECT_TRUE(result.accepted) << result.rejection;
+    frames.push_back(result.frame);
+    if (clouded != nullptr) *clouded += result.report.plots_in_clouds;
+    if (most_tracks != nullptr) {
+      *most_tracks = std::max(*most_tracks, static_cast<int>(result.frame.tracks.size()));
+    }
+  }
+  return frames;
+}
+
+TEST(PlotCloud, StartsNoTrackAndLeavesTheTracksElsewhereAsTheyWere) {
+  // GIVEN one aircraft tracked alone, and the same aircraft while a cloud of 3000 plots
+  // fills six scans 25 km away
+  const std::vector<TrackFrame> alone = run(false);
+  int clouded = 0, most_tracks = 0;
+  const std::vector<TrackFrame> crowded = run(true, &clouded, &most_tracks);
+  // THEN the cloud's plots start no track (without the rule each started one: 3000 tracks,
+  // each gating the 3000 plots)
+  EXPECT_GE(clouded, 6 * 3000 - 100);
+  EXPECT_LE(most_tracks, 1);
+  // AND the aircraft's track is the same, frame for frame, as without the cloud
+  ASSERT_EQ(alone.size(), crowded.size());
+  int confirmed = 0;
+  for (std::size_t k = 0; k < alone.size(); ++k) {
+    ASSERT_EQ(alone[k].tracks.size(), crowded[k].tracks.size()) << "scan " << k;
+    for (std::size_t t = 0; t < alone[k].tracks.size(); ++t) {
+      const TrackReport& a = alone[k].tracks[t];
+      const TrackReport& b = crowded[k].tracks[t];
+      EXPECT_EQ(a.id, b.id);
+      EXPECT_EQ(a.status, b.status);
+      EXPECT_LE((a.position - b.position).norm(), 1e-6) << "scan " << k;
+      confirmed += a.status == TrackStatus::kConfirmed ? 1 : 0;
+    }
+  }
+  EXPECT_GE(confirmed, 8);  // the comparison is of a real track
+}
+
+}  // namespace
+}  // namespace skytrack
