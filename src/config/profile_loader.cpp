@@ -256,6 +256,17 @@ InitiationSpec read_initiation(YamlSection s) {
   return in;
 }
 
+InputLimitsSpec read_input_limits(YamlSection s) {
+  InputLimitsSpec in;
+  // A kilometre (a bound below any radar's range would refuse its plots) to the geostationary
+  // orbit and beyond; a second (a bound below a batch interval would refuse every batch) to a
+  // week.
+  s.number("max_range", in.max_range, Range{1e3, 1e8});
+  s.number("max_time_jump", in.max_time_jump, Range{1.0, 604800.0});
+  s.finish();
+  return in;
+}
+
 TrackLifeSpec read_track_life(YamlSection s) {
   TrackLifeSpec t;
   read_enum(s, "confirmation", t.confirmation,
@@ -432,6 +443,7 @@ TrackingProfile read_profile(const YAML::Node& node, ErrorList& errors) {
   p.initiation = read_initiation(root.section("initiation"));
   p.track_life = read_track_life(root.section("track_life"));
   p.branching = read_branching(root.section("branching"), errors, p);
+  p.input_limits = read_input_limits(root.section("input_limits"));
   root.finish();
   return p;
 }

@@ -65,7 +65,7 @@ struct Daemon::Impl {
         session(std::move(s)),
         queue(static_cast<std::size_t>(c.queue.capacity), c.queue.overload),
         status(c.instance),
-        validator(c.sensors) {}
+        validator(c.sensors, c.max_ahead_of_host) {}
 
   void receive_loop();
   void receive_batch();
@@ -244,7 +244,11 @@ std::optional<QueuedScan> Daemon::Impl::convert(const skytrack_dds_PlotBatch& ba
 void Daemon::Impl::apply_pending_profile() {
   std::lock_guard lock(pending_mutex);
   if (!pending) return;
-  if (!pending_keeps_tracks) pipeline = std::move(*pending);
+  if (pending_keeps_tracks) {
+    pipeline.set_input_limits(pending->profile().input_limits);
+  } else {
+    pipeline = std::move(*pending);
+  }
   status.set_profile(pending_identity.name, pending_identity.version);
   spdlog::info("profile '{}' version {} now in use ({})", pending_identity.name,
                pending_identity.version, pending_keeps_tracks ? "tracks kept" : "tracks restarted");
@@ -253,7 +257,9 @@ void Daemon::Impl::apply_pending_profile() {
 
 void Daemon::Impl::track_one(QueuedScan& item) {
   const PlotScan& scan = item.scan;
-  if (const auto bad = validator.check(scan)) {
+  const double host_time =
+      std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  if (const auto bad = validator.check(scan, host_time)) {
     status.scan_rejected(*bad);
     if (const auto count = bad_scan_log.allow()) {
       spdlog::warn("sensor {} scan {} (t = {}) skipped: {} ({} skipped since last message)",
@@ -261,15 +267,28 @@ void Daemon::Impl::track_one(QueuedScan& item) {
     }
     return;
   }
-  for (const Plot& plot : scan.plots) {
-    if (const auto why = invalid_plot_reason(plot)) status.plots_rejected(*why, 1);
-  }
   const ScanResult& result = pipeline.process(scan);
   if (!result.accepted) {
-    status.scan_rejected(reason::kPipelineRejected);
-    spdlog::warn("sensor {} scan {} rejected by the pipeline: {}", scan.sensor, scan.scan,
-                 result.rejection);
+    status.scan_rejected(result.reason);
+    if (const auto count = bad_scan_log.allow()) {
+      spdlog::warn("{} (t = {}; {} skipped since last message)", result.rejection, scan.time,
+                   *count);
+    }
     return;
+  }
+  if (result.clock_restarted) {
+    spdlog::warn(
+        "sensor {} scan {} (t = {}): the sensor's clock restarted (three batches in a "
+        "row that follow each other, not its latest); {}",
+        scan.sensor, scan.scan, scan.time,
+        result.tracks_restarted ? "all tracks restart"
+                                : "its looks restart, on the other sensors' clock");
+  }
+  if (result.report.plots_invalid > 0) {
+    for (const Plot& plot : scan.plots) {
+      const auto why = invalid_plot_reason(plot, pipeline.profile().input_limits, scan.time);
+      if (why) status.plots_rejected(*why, 1);
+    }
   }
   status.plots_rejected(reason::kClutter,
                         static_cast<std::uint64_t>(result.report.plots_rejected_clutter));

@@ -158,6 +158,7 @@ DaemonConfig read_config(const YAML::Node& root, ErrorList& errors, const std::s
   }
   d.integer("max_plots_per_scan", c.max_plots_per_scan, Range{1.0, 10000000.0});
   d.number("status_period", c.status_period, Range{0.01, 3600.0});
+  d.number("max_ahead_of_host", c.max_ahead_of_host, Range{0.0, 31536000.0});
   d.finish();
   read_input(top.section("input"), c.input);
   read_dds(top.section("dds"), c.dds);

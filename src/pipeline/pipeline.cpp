@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "skytrack/core/transponder.hpp"
 
@@ -22,9 +23,14 @@ bool carries_height(const PlotScan& batch) {
 
 }  // namespace
 
-std::optional<std::string> invalid_plot_reason(const Plot& plot) {
+std::optional<std::string> invalid_plot_reason(const Plot& plot,
+                                               const config::InputLimitsSpec& limits,
+                                               double batch_time) {
   if (!finite(plot.time) || !finite(plot.snr_db) || !finite(plot.amplitude)) {
     return "non-finite time or strength";
+  }
+  if (plot.time && std::abs(*plot.time - batch_time) > limits.max_time_jump) {
+    return "plot time beyond max_time_jump of its batch's";
   }
   if (plot.flight_level && !plausible_flight_level(*plot.flight_level)) {
     return "flight level not finite or outside -15 to 1500";
@@ -33,14 +39,33 @@ std::optional<std::string> invalid_plot_reason(const Plot& plot) {
   for (const auto* v : {&s.range, &s.azimuth, &s.elevation, &s.range_rate, &s.x, &s.y, &s.z}) {
     if (*v && !(std::isfinite(**v) && **v > 0.0)) return "sigma not positive and finite";
   }
+  for (const auto* v : {&s.range, &s.range_rate, &s.x, &s.y, &s.z}) {
+    if (*v && **v > limits.max_range) return "sigma beyond max_range";
+  }
+  for (const auto* v : {&s.azimuth, &s.elevation}) {
+    if (*v && **v > std::numbers::pi) return "angle sigma beyond pi";
+  }
   if (plot.form == PlotForm::kPolar) {
     if (!std::isfinite(plot.range) || !std::isfinite(plot.azimuth) || !finite(plot.elevation) ||
         !finite(plot.range_rate)) {
       return "non-finite polar value";
     }
     if (plot.range < 0.0) return "negative range";
-  } else if (!std::isfinite(plot.x) || !std::isfinite(plot.y) || !finite(plot.z)) {
-    return "non-finite Cartesian value";
+    if (plot.range > limits.max_range) return "range beyond max_range";
+    if (std::abs(plot.azimuth) > 2.0 * std::numbers::pi) return "azimuth outside -2pi to 2pi";
+    if (plot.elevation && std::abs(*plot.elevation) > std::numbers::pi / 2.0) {
+      return "elevation outside -pi/2 to pi/2";
+    }
+    if (plot.range_rate && std::abs(*plot.range_rate) > limits.max_range) {
+      return "range rate beyond max_range per second";
+    }
+  } else {
+    if (!std::isfinite(plot.x) || !std::isfinite(plot.y) || !finite(plot.z)) {
+      return "non-finite Cartesian value";
+    }
+    if (std::hypot(plot.x, plot.y, plot.z.value_or(0.0)) > limits.max_range) {
+      return "range beyond max_range";
+    }
   }
   return std::nullopt;
 }
@@ -70,20 +95,34 @@ Expected<Pipeline> Pipeline::create(const config::TrackingProfile& profile) {
   return Pipeline(profile);
 }
 
-std::optional<std::string> Pipeline::check_order(const PlotScan& scan) const {
-  if (!std::isfinite(scan.time)) return "non-finite batch time";
-  const auto it = sensors_.find(scan.sensor);
-  if (it == sensors_.end()) return std::nullopt;
-  if (scan.scan == it->second.scan) return "duplicate scan " + std::to_string(scan.scan);
-  if (scan.scan < it->second.scan) {
-    return "scan " + std::to_string(scan.scan) + " after scan " + std::to_string(it->second.scan);
+void Pipeline::restart_clock(std::uint32_t id, double time) {
+  ++counters_.clock_restarts;
+  result_.clock_restarted = true;
+  // The sensor's new clock may agree with the other sensors' (it was its old one that was
+  // wrong): the tracks go on, the sensor's looks start again. Otherwise no track's time
+  // compares with the batches to come.
+  const bool agrees = std::any_of(sensors_.begin(), sensors_.end(), [&](const auto& other) {
+    const auto& latest = other.second.clock.latest();
+    return other.first != id && latest &&
+           std::abs(latest->time - time) <= profile_.input_limits.max_time_jump;
+  });
+  if (agrees) {
+    sensors_.at(id).feed = SensorFeed(profile_.antenna);
+    return;
   }
-  if (scan.time < it->second.time) return "time goes backwards";
-  return std::nullopt;
+  result_.tracks_restarted = true;
+  tracker_.reset();
+  for (auto& [other, state] : sensors_) state.feed = SensorFeed(profile_.antenna);
+}
+
+void Pipeline::set_input_limits(const config::InputLimitsSpec& limits) {
+  profile_.input_limits = limits;
 }
 
 const PlotScan& Pipeline::without_invalid_plots(const PlotScan& scan) {
-  const auto invalid = [](const Plot& plot) { return invalid_plot_reason(plot).has_value(); };
+  const auto invalid = [&](const Plot& plot) {
+    return invalid_plot_reason(plot, profile_.input_limits, scan.time).has_value();
+  };
   if (std::none_of(scan.plots.begin(), scan.plots.end(), invalid)) return scan;
   // Copy the whole batch, so every field (present or added later) travels with the plots.
   clean_ = scan;
@@ -96,28 +135,41 @@ const ScanResult& Pipeline::process(const PlotScan& scan) {
   result_.refused = false;
   result_.rejection.clear();
   result_.report = ScanReport{};
-  if (auto reason = check_order(scan)) {
+  result_.reason = {};
+  result_.clock_restarted = false;
+  result_.tracks_restarted = false;
+  const auto reject = [&](std::string_view reason,
+                          const BatchClock* clock = nullptr) -> const ScanResult& {
     ++counters_.scans_rejected;
-    result_.rejection = "sensor " + std::to_string(scan.sensor) + ": " + *reason;
+    result_.reason = reason;
+    result_.rejection = "sensor " + std::to_string(scan.sensor) + " scan " +
+                        std::to_string(scan.scan) + ": " + std::string(reason);
+    if (clock != nullptr && clock->latest()) {
+      result_.rejection += " (t = " + std::to_string(scan.time) + " s; latest accepted: scan " +
+                           std::to_string(clock->latest()->scan) +
+                           ", t = " + std::to_string(clock->latest()->time) + " s)";
+    }
     return result_;
-  }
+  };
+  if (!std::isfinite(scan.time)) return reject(batch_reason::kNonFiniteTime);
   if (!scan.platform.position.allFinite() || !scan.platform.velocity.allFinite() ||
       !scan.platform.attitude.allFinite()) {
-    ++counters_.scans_rejected;
-    result_.rejection = "sensor " + std::to_string(scan.sensor) + ": non-finite platform state";
-    return result_;
+    return reject(batch_reason::kNonFinitePlatform);
   }
   SensorState& sensor =
-      sensors_.try_emplace(scan.sensor, SensorState{0, 0.0, SensorFeed(profile_.antenna)})
+      sensors_.try_emplace(scan.sensor, SensorState{BatchClock{}, SensorFeed(profile_.antenna)})
           .first->second;
-  sensor.scan = scan.scan;
-  sensor.time = scan.time;
+  const BatchClock::Verdict verdict =
+      sensor.clock.admit(scan.scan, scan.time, profile_.input_limits.max_time_jump);
+  if (!verdict.refusal.empty()) return reject(verdict.refusal, &sensor.clock);
+  if (verdict.restarted) restart_clock(scan.sensor, scan.time);
   const PlotScan& usable = without_invalid_plots(scan);
   if (!tracker_) {
     // The first batch with plots sets the dimension (an empty one says nothing of it).
     if (auto refusal = dimension_refusal(profile_, usable)) {
       ++counters_.scans_rejected;
       result_.rejection = std::move(*refusal);
+      result_.reason = kProfileRefusal;
       result_.refused = true;
       return result_;
     }

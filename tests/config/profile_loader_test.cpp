@@ -152,6 +152,22 @@ TEST(ProfileLoader, ClutterMapCellsHavePhysicalBounds) {
               HasSubstr("association.clutter_map.cartesian_cell: expected a number in"));
 }
 
+TEST(ProfileLoader, InputLimitsAreReadAndPhysicallyBounded) {
+  const auto profile =
+      parse_profile(kHeader + std::string("input_limits: {max_range: 500e3, max_time_jump: 60}\n"),
+                    "p.yaml");
+  ASSERT_TRUE(profile) << profile.error().message;
+  EXPECT_EQ(profile->input_limits.max_range, 500e3);
+  EXPECT_EQ(profile->input_limits.max_time_jump, 60.0);
+  // A bound below any radar's range or a batch interval would refuse every plot or batch.
+  EXPECT_THAT(error_of("input_limits: {max_range: 10}\n"),
+              HasSubstr("p.yaml:3: input_limits.max_range: expected a number in"));
+  EXPECT_THAT(error_of("input_limits: {max_time_jump: 0.01}\n"),
+              HasSubstr("input_limits.max_time_jump: expected a number in"));
+  EXPECT_THAT(error_of("input_limits: {max_time_jump: 1e300}\n"),
+              HasSubstr("input_limits.max_time_jump: expected a number in"));
+}
+
 TEST(ProfileLoader, KeyOfAnotherModelTypeIsUnknown) {
   EXPECT_THAT(error_of("motion_models:\n  - name: cv\n    type: constant_velocity\n"
                        "    accel_sigma: 1\n    turn_rate: 0.1\n"),

@@ -33,12 +33,13 @@ TEST(DaemonConfig, ShippedFileLoadsWithTheBuiltInDefaults) {
   EXPECT_EQ(config->status_period, defaults.status_period);
   EXPECT_TRUE(config->sensors.empty());
   EXPECT_TRUE(config->dds.partitions.empty());
+  EXPECT_FALSE(config->max_ahead_of_host);  // sensors' time bases vary: off unless set
 }
 
 TEST(DaemonConfig, ReadsEverySetting) {
   const auto config = parse_daemon_config(R"(
 skytrackd: {instance: t1, profile: p.yaml, sensors: [1, 4], max_plots_per_scan: 500,
-            status_period: 0.5}
+            status_period: 0.5, max_ahead_of_host: 30}
 dds:
   domain: 17
   partition: radar-a
@@ -57,6 +58,7 @@ logging: {level: debug, sink: file, file: log/skytrackd.log, max_size_mb: 2, max
   EXPECT_EQ(config->sensors, (std::vector<std::int64_t>{1, 4}));
   EXPECT_EQ(config->max_plots_per_scan, 500);
   EXPECT_EQ(config->status_period, 0.5);
+  EXPECT_EQ(config->max_ahead_of_host, 30.0);
   EXPECT_EQ(config->dds.domain, 17);
   EXPECT_EQ(config->dds.partitions, (std::vector<std::string>{"radar-a"}));
   EXPECT_EQ(config->dds.topics.status, "s");

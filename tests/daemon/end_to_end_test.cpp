@@ -299,6 +299,7 @@ TEST_F(EndToEnd, BadSamplesAreCountedAndTheGoodScansTracksAreUnchanged) {
       p.x = std::numeric_limits<double>::infinity();
       scan.plots.push_back(p);  // non-finite Cartesian value
     }
+    if (i == 11) scan.plots.push_back(polar(9004, 5e22));  // range beyond max_range
     ASSERT_TRUE(publisher.write(scan));
     const PlotScan& next = good[std::min(i + 1, good.size() - 1)];
     if (i == 10) {
@@ -340,6 +341,11 @@ TEST_F(EndToEnd, BadSamplesAreCountedAndTheGoodScansTracksAreUnchanged) {
       back.time = good[i].time - 1.0;  // time goes backwards
       ASSERT_TRUE(publisher.write(back));
     }
+    if (i == 26) {
+      PlotScan ahead = next;
+      ahead.time += 50.0 * 365.25 * 86400.0;  // time jumps forward: the sensor goes on
+      ASSERT_TRUE(publisher.write(ahead));
+    }
   }
   ASSERT_EQ(record.wait(30s), 0) << record.log();
   ASSERT_EQ(run({kTool, "status", "--config", config}, path("status.log")), 0)
@@ -351,10 +357,12 @@ TEST_F(EndToEnd, BadSamplesAreCountedAndTheGoodScansTracksAreUnchanged) {
   std::map<std::string, std::uint64_t> plots, scans;
   const auto numbers = status_numbers(read_file(path("status.log")), plots, scans);
   EXPECT_EQ(numbers.at("scans_processed"), static_cast<double>(good.size()));
-  EXPECT_EQ(numbers.at("plots_processed"), static_cast<double>(good_plots + 3));
+  EXPECT_EQ(numbers.at("plots_processed"), static_cast<double>(good_plots + 4));
   EXPECT_EQ(numbers.at("scans_dropped"), 0.0);
-  const std::map<std::string, std::uint64_t> expected_plots{
-      {"non-finite polar value", 1}, {"negative range", 1}, {"non-finite Cartesian value", 1}};
+  const std::map<std::string, std::uint64_t> expected_plots{{"non-finite polar value", 1},
+                                                            {"negative range", 1},
+                                                            {"non-finite Cartesian value", 1},
+                                                            {"range beyond max_range", 1}};
   EXPECT_EQ(plots, expected_plots);
   const std::map<std::string, std::uint64_t> expected_scans{{"duplicate scan", 1},
                                                             {"out-of-order scan", 1},
@@ -363,7 +371,8 @@ TEST_F(EndToEnd, BadSamplesAreCountedAndTheGoodScansTracksAreUnchanged) {
                                                             {"malformed sample", 1},
                                                             {"non-finite batch time", 1},
                                                             {"non-finite platform state", 1},
-                                                            {"time goes backwards", 1}};
+                                                            {"time goes backwards", 1},
+                                                            {"time jumps forward", 1}};
   EXPECT_EQ(scans, expected_scans);
   // ... and the tracks are those of the clean stream
   expect_same_tracks(read_tracks(path("live.tracks.jsonl")),

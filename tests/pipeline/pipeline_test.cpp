@@ -34,7 +34,8 @@ TEST(Pipeline, RejectsOutOfOrderAndDuplicateBatchesAndCountsThem) {
   EXPECT_TRUE(pipeline->process(batch(5, 5.0, {})).accepted);
   const ScanResult& duplicate = pipeline->process(batch(5, 5.0, {}));
   EXPECT_FALSE(duplicate.accepted);
-  EXPECT_NE(duplicate.rejection.find("duplicate scan 5"), std::string::npos);
+  EXPECT_EQ(duplicate.reason, batch_reason::kDuplicateScan);
+  EXPECT_NE(duplicate.rejection.find("sensor 1 scan 5: duplicate scan"), std::string::npos);
   EXPECT_FALSE(pipeline->process(batch(4, 6.0, {})).accepted);
   EXPECT_FALSE(pipeline->process(batch(6, 4.0, {})).accepted);  // time goes backwards
   EXPECT_FALSE(pipeline->process(batch(7, std::nan(""), {})).accepted);

@@ -242,6 +242,19 @@ struct AntennaSpec {
   bool operator==(const AntennaSpec&) const = default;
 };
 
+/// Physical limits on what a sensor reports: a plot or a batch beyond them is corrupt (or
+/// hostile) and is rejected, counted by reason, before it reaches the tracks.
+struct InputLimitsSpec {
+  // [m] slant range of a polar plot, distance from the radar of a Cartesian one: far beyond
+  // any radar's instrumented range, so only garbage is refused.
+  double max_range = 2.0e6;
+  // [s] the forward step from a sensor's latest batch (and a plot's time from its batch's):
+  // a sensor silent longer has lost its tracks anyway; its next batches restart its clock
+  // (batch_clock.hpp).
+  double max_time_jump = 600.0;
+  bool operator==(const InputLimitsSpec&) const = default;
+};
+
 struct TrackingProfile {
   ProfileIdentity identity;
   TrackingMode mode = TrackingMode::kPoint;
@@ -276,6 +289,7 @@ struct TrackingProfile {
   InitiationSpec initiation;
   TrackLifeSpec track_life;
   BranchingSpec branching;
+  InputLimitsSpec input_limits;
   bool operator==(const TrackingProfile&) const = default;
 };
 

@@ -4,6 +4,7 @@
 // logging. Validated like the profiles: every mistake is reported at once as
 // "file:line: key.path: what was expected", unknown keys included.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -87,6 +88,9 @@ struct DaemonConfig {
   std::vector<std::int64_t> sensors;   // accepted sensor ids; empty: any
   int max_plots_per_scan = 100000;     // larger batches are rejected as absurd
   double status_period = 1.0;          // [s]
+  // [s] batches dated further ahead of the host's UTC clock are refused; for sensors that
+  // date their batches in UTC seconds since 1970. Absent: not checked.
+  std::optional<double> max_ahead_of_host;
   InputSettings input;
   DdsSettings dds;
   QueueSettings queue;

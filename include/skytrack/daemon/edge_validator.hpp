@@ -1,10 +1,10 @@
 #pragma once
-// Scan-level checks at the DDS edge, before a scan reaches the Pipeline: unknown sensors (when
-// the configuration lists sensors), duplicate and out-of-order scans per sensor, non-finite
-// batch time or platform state. A rejected scan never touches the tracks. The reasons are
-// short fixed names, so the status can count them.
+// Checks at the daemon's edge, before a batch reaches the Pipeline: unknown sensors (when the
+// configuration lists sensors), and, when configured, a batch time too far ahead of the host's
+// clock (for sensors that date their batches in UTC seconds since 1970). Order and time per
+// sensor are the Pipeline's (batch_clock.hpp). The reasons are short fixed names, so the
+// status can count them.
 #include <cstdint>
-#include <map>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -15,32 +15,26 @@ namespace skytrack::daemon {
 
 namespace reason {
 inline constexpr std::string_view kUnknownSensor = "unknown sensor";
-inline constexpr std::string_view kDuplicateScan = "duplicate scan";
-inline constexpr std::string_view kOutOfOrderScan = "out-of-order scan";
-inline constexpr std::string_view kTimeBackwards = "time goes backwards";
-inline constexpr std::string_view kNonFiniteTime = "non-finite batch time";
-inline constexpr std::string_view kNonFinitePlatform = "non-finite platform state";
+inline constexpr std::string_view kAheadOfHost = "time ahead of the host clock";
 inline constexpr std::string_view kTooManyPlots = "too many plots";
 inline constexpr std::string_view kMalformedSample = "malformed sample";
 inline constexpr std::string_view kClutter = "clutter";
-inline constexpr std::string_view kPipelineRejected = "rejected by the pipeline";
 }  // namespace reason
 
 class EdgeValidator {
  public:
-  /// `sensors` empty: every sensor is accepted.
-  explicit EdgeValidator(std::vector<std::int64_t> sensors = {});
+  /// `sensors` empty: every sensor is accepted. `max_ahead` [s]: a batch dated further ahead
+  /// of the host's UTC clock is refused; nullopt: not checked.
+  explicit EdgeValidator(std::vector<std::int64_t> sensors = {},
+                         std::optional<double> max_ahead = std::nullopt);
 
-  /// Why the scan must be skipped, or nullopt; an accepted scan advances its sensor's clock.
-  std::optional<std::string_view> check(const PlotScan& scan);
+  /// Why the batch must be skipped, or nullopt; `host_time` is the host's UTC clock [s since
+  /// 1970].
+  std::optional<std::string_view> check(const PlotScan& scan, double host_time) const;
 
  private:
-  struct Clock {
-    std::uint64_t scan = 0;
-    double time = 0.0;
-  };
   std::vector<std::int64_t> sensors_;
-  std::map<std::uint32_t, Clock> clocks_;
+  std::optional<double> max_ahead_;
 };
 
 }  // namespace skytrack::daemon

@@ -8,11 +8,13 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "skytrack/config/profile.hpp"
 #include "skytrack/core/expected.hpp"
 #include "skytrack/core/plot.hpp"
 #include "skytrack/core/track_report.hpp"
+#include "skytrack/pipeline/batch_clock.hpp"
 #include "skytrack/pipeline/sensor_feed.hpp"
 #include "skytrack/tracking/point_tracker.hpp"
 
@@ -21,17 +23,24 @@ namespace skytrack {
 /// Totals since the pipeline started, by reason.
 struct PipelineCounters {
   std::uint64_t scans_processed = 0;
-  std::uint64_t scans_rejected = 0;  // out of order, duplicate, bad time
+  std::uint64_t scans_rejected = 0;  // out of order, duplicate, bad time, refused by the profile
+  std::uint64_t clock_restarts = 0;  // a sensor's clock restarted (batch_clock.hpp)
   std::uint64_t plots_processed = 0;
-  std::uint64_t plots_invalid = 0;  // non-finite values, negative range, no form
+  std::uint64_t plots_invalid = 0;  // invalid_plot_reason
   std::uint64_t plots_rejected_clutter = 0;
 };
 
+/// The reason name of a batch the profile cannot serve (dimension_refusal).
+inline constexpr std::string_view kProfileRefusal = "rejected by the pipeline";
+
 struct ScanResult {
   bool accepted = false;
-  std::string rejection;  // why the batch was skipped
-  bool refused = false;   // skipped because the profile cannot serve these plots
-  TrackFrame frame;       // valid when accepted
+  std::string rejection;          // why the batch was skipped, in full
+  std::string_view reason;        // its short fixed name (batch_reason, kProfileRefusal)
+  bool refused = false;           // skipped because the profile cannot serve these plots
+  bool clock_restarted = false;   // accepted as a restart of its sensor's clock (batch_clock.hpp)
+  bool tracks_restarted = false;  // ... which no other sensor's clock agreed with: tracks restart
+  TrackFrame frame;               // valid when accepted
   ScanReport report;
 };
 
@@ -44,18 +53,21 @@ class Pipeline {
 
   const PipelineCounters& counters() const { return counters_; }
   const config::TrackingProfile& profile() const { return profile_; }
+  /// New input limits for the next batches; the tracks go on.
+  void set_input_limits(const config::InputLimitsSpec& limits);
 
  private:
   explicit Pipeline(const config::TrackingProfile& profile) : profile_(profile) {}
-  std::optional<std::string> check_order(const PlotScan& scan) const;
+  /// Sensor `id`'s clock restarted at `time`: its looks start again, and the tracks too
+  /// unless another sensor's clock agrees with the new one.
+  void restart_clock(std::uint32_t id, double time);
   /// The batch itself when all its plots are usable, else a copy without the bad ones.
   const PlotScan& without_invalid_plots(const PlotScan& scan);
 
   config::TrackingProfile profile_;
   std::optional<PointTracker> tracker_;  // created with the first batch with plots
   struct SensorState {
-    std::uint64_t scan = 0;  // the latest batch's number and time
-    double time = 0.0;
+    BatchClock clock;
     SensorFeed feed;
   };
   std::map<std::uint32_t, SensorState> sensors_;
@@ -74,7 +86,10 @@ int tracker_dimension(const config::TrackingProfile& profile, const PlotScan& fi
 std::optional<std::string> dimension_refusal(const config::TrackingProfile& profile,
                                              const PlotScan& first);
 
-/// Why a plot cannot be used (non-finite value, negative range, neither or both forms), if so.
-std::optional<std::string> invalid_plot_reason(const Plot& plot);
+/// Why a plot cannot be used, if so: a non-finite value, a negative range, a value beyond the
+/// profile's input limits (range, angles, sigmas, its time from its batch's at `batch_time`).
+std::optional<std::string> invalid_plot_reason(const Plot& plot,
+                                               const config::InputLimitsSpec& limits,
+                                               double batch_time);
 
 }  // namespace skytrack
