@@ -190,6 +190,7 @@ const ScanResult& Pipeline::process(const PlotScan& scan) {
   counters_.plots_invalid += static_cast<std::uint64_t>(result_.report.plots_invalid);
   counters_.plots_rejected_clutter +=
       static_cast<std::uint64_t>(result_.report.plots_rejected_clutter);
+  counters_.numeric_failures += static_cast<std::uint64_t>(result_.report.numeric_failures);
   ++counters_.scans_processed;
   result_.accepted = true;
   return result_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 
@@ -212,6 +213,7 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
     }
   }
   report_tracks(scan.time, report, frame);
+  report.numeric_failures += std::exchange(numeric_failures_, 0);
   if (windowed_) {
     boxed_.resize(plots_.size());
     for (std::size_t j = 0; j < plots_.size(); ++j) boxed_[j] = rejected_[j] || crowd_[j] ? 0 : 1;
@@ -582,6 +584,7 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
         pda ? pda_marginals(problem)
             : (gnn ? gnn_.associate(problem)
                    : (pda_above_exact ? jpda_manoeuvre_ : jpda_).solve(problem));
+    numeric_failures_ += result.status != JpdaStatus::kOk;
     if (pda) {
       ++report.approximated_clusters;
       add_event(frame, "jpda_approximated", 0,
@@ -678,8 +681,8 @@ PointTracker::PlotRatios PointTracker::soft_update(int t, std::vector<Candidate>
     kept += beta_plots[k];
   }
   for (double& b : kept_beta_) b /= kept;
-  track.estimate = filter_.update(predicted_[t], hypotheses_, kept_beta_, beta_miss / kept, pd,
-                                  profile_.association.gate_probability, density);
+  track.estimate = counted(filter_.update(predicted_[t], hypotheses_, kept_beta_, beta_miss / kept,
+                                          pd, profile_.association.gate_probability, density));
   if (holds_last_motion() && valid_association(beta_plots, beta_miss)) {
     track.last_detected = track.estimate;  // it found its target (a son, later a father)
   }
@@ -736,9 +739,9 @@ ImmEstimate PointTracker::start_estimate(const Initiation& initiation, TrackLife
     const double density = clutter_density(plot, -1);
     update_existence(life, h.likelihood / density, profile_.association.detection_probability,
                      profile_.association.gate_probability, profile_.track_life);
-    estimate = filter_.update(predicted, std::span(&h, 1), std::span(&one, 1), 0.0,
-                              profile_.association.detection_probability,
-                              profile_.association.gate_probability, density);
+    estimate = counted(filter_.update(predicted, std::span(&h, 1), std::span(&one, 1), 0.0,
+                                      profile_.association.detection_probability,
+                                      profile_.association.gate_probability, density));
   }
   return estimate;
 }

@@ -724,9 +724,9 @@ ImmEstimate PointTracker::son_start(int father, const PlotMeasurement& plot) con
   const PlotHypothesis h = filter_.hypothesise(start, plot);
   if (!h.usable) return start;
   const double one = 1.0;
-  return filter_.update(start, std::span(&h, 1), std::span(&one, 1), 0.0,
-                        profile_.association.detection_probability,
-                        profile_.association.gate_probability, clutter_density(plot, -1));
+  return counted(filter_.update(start, std::span(&h, 1), std::span(&one, 1), 0.0,
+                                profile_.association.detection_probability,
+                                profile_.association.gate_probability, clutter_density(plot, -1)));
 }
 
 bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double score,

@@ -125,13 +125,14 @@ int run_track(const TrackOptions& options) {
   fmt::print(
       stderr,
       "skytrack track: profile '{}': {} batches ({} skipped), {} plots ({} invalid, {} "
-      "rejected as clutter), {} lines rejected\n"
+      "rejected as clutter), {} lines rejected, {} numeric failures\n"
       "  tracks initiated {}, most at once {}\n"
       "  per batch: mean {:.3f} ms, p50 {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms; wall {:.2f} s; "
       "peak RSS {:.1f} MiB\n",
       profile.identity.name, c.scans_processed, c.scans_rejected, c.plots_processed,
-      c.plots_invalid, c.plots_rejected_clutter, reader->counts().rejected_lines, initiated,
-      max_tracks, mean(latency_ms), percentile(latency_ms, 0.5), percentile(latency_ms, 0.99),
+      c.plots_invalid, c.plots_rejected_clutter, reader->counts().rejected_lines,
+      c.numeric_failures, initiated, max_tracks, mean(latency_ms), percentile(latency_ms, 0.5),
+      percentile(latency_ms, 0.99),
       latency_ms.empty() ? 0.0 : *std::max_element(latency_ms.begin(), latency_ms.end()), wall,
       peak_rss_mib());
   return 0;

@@ -28,6 +28,7 @@ struct PipelineCounters {
   std::uint64_t plots_processed = 0;
   std::uint64_t plots_invalid = 0;  // invalid_plot_reason
   std::uint64_t plots_rejected_clutter = 0;
+  std::uint64_t numeric_failures = 0;  // ScanReport::numeric_failures
 };
 
 /// The reason name of a batch the profile cannot serve (dimension_refusal).

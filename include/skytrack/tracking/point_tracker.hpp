@@ -56,6 +56,8 @@ struct ScanReport {
   int tentative = 0, confirmed = 0, coasting = 0;
   int initiated = 0, deleted = 0;
   int clusters = 0, largest_cluster = 0, approximated_clusters = 0;
+  // Track updates in which a mode kept its prediction (an innovation covariance that would
+  // not factorise), and clusters whose association failed (JpdaStatus other than ok).
   int numeric_failures = 0;
   // Branch tracking: live sons and grandsons after the batch, and this batch's decisions.
   int branches = 0;
@@ -331,11 +333,19 @@ class PointTracker {
   /// The start of a new track's estimate; the chain's plots after the first two also update
   /// its existence.
   ImmEstimate start_estimate(const Initiation& initiation, TrackLife& life) const;
+  /// An update, its failed modes (which kept their prediction) counted for the report.
+  ImmEstimate counted(ImmEstimate update) const {
+    numeric_failures_ += update.numeric_failure() ? 1 : 0;
+    return update;
+  }
 
   config::TrackingProfile profile_;
   config::TrackLifeSpec branch_life_;  // sons and grandsons: M-of-N confirmation
   StateLayout layout_;
   ImmFilter filter_;
+  // Updates with failed modes and clusters whose association failed, since the last report:
+  // counted where they happen, some of them in const members.
+  mutable int numeric_failures_ = 0;
   std::optional<ImmFilter> manoeuvre_;  // the manoeuvre gate's models; set when branching
   std::optional<ImmFilter> hold_;       // a held last motion's (last_motion_accel_sigma)
   Eigen::VectorXd manoeuvre_start_;     // their probabilities at a gate's start (uniform)
