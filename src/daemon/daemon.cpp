@@ -36,6 +36,14 @@ Expected<config::TrackingProfile> load_tracking_profile(const std::string& path)
 }
 
 std::string restart_reason(const config::TrackingProfile& a, const config::TrackingProfile& b) {
+  // The decision compares the whole profile, so a section added later cannot be forgotten;
+  // only the identity and the input limits (which the running pipeline takes) are left out.
+  const auto tracking = [](config::TrackingProfile p) {
+    p.identity = {};
+    p.input_limits = {};
+    return p;
+  };
+  if (tracking(a) == tracking(b)) return {};
   std::string out;
   const auto differs = [&out](bool same, const char* section) {
     if (!same) out += (out.empty() ? "" : ", ") + std::string(section);
@@ -54,7 +62,7 @@ std::string restart_reason(const config::TrackingProfile& a, const config::Track
   differs(a.initiation == b.initiation, "initiation");
   differs(a.track_life == b.track_life, "track_life");
   differs(a.branching == b.branching, "branching");
-  return out;
+  return out.empty() ? "tracking parameters" : out;
 }
 
 struct Daemon::Impl {

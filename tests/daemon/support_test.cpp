@@ -1,4 +1,7 @@
 // Small daemon parts: rate-limited logging, status counters, profile reload decisions.
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "skytrack/daemon/daemon.hpp"
@@ -73,6 +76,42 @@ TEST(ProfileReload, AnAntennaOrModeTransitionIntervalChangeRestartsTheTracks) {
   // THEN either restarts the tracks (their looks and mode switching depend on them)
   EXPECT_EQ(restart_reason(before, antenna), "antenna");
   EXPECT_EQ(restart_reason(before, interval), "mode_transition_interval");
+}
+
+TEST(ProfileReload, EverySectionRestartsTheTracksButIdentityAndInputLimits) {
+  using config::TrackingProfile;
+  const TrackingProfile before;
+  const std::vector<std::pair<const char*, void (*)(TrackingProfile&)>> sections = {
+      {"mode", [](TrackingProfile& p) { p.mode = config::TrackingMode::kGroup; }},
+      {"dimension", [](TrackingProfile& p) { p.dimension = 2; }},
+      {"measurement", [](TrackingProfile& p) { p.measurement.default_sigma.range = 50.0; }},
+      {"antenna", [](TrackingProfile& p) { p.antenna.period = 10.0; }},
+      {"motion_models", [](TrackingProfile& p) { p.motion_models[0].accel_sigma = 3.0; }},
+      {"mode_transition",
+       [](TrackingProfile& p) {
+         p.mode_transition[0] = {0.8, 0.1, 0.1};
+       }},
+      {"mode_transition_interval", [](TrackingProfile& p) { p.mode_transition_interval = 2.0; }},
+      {"initial_mode_probabilities",
+       [](TrackingProfile& p) {
+         p.initial_mode_probabilities = {0.6, 0.2, 0.2};
+       }},
+      {"association", [](TrackingProfile& p) { p.association.k_best = 50; }},
+      {"clutter_rejection", [](TrackingProfile& p) { p.clutter_rejection.enabled = true; }},
+      {"initiation", [](TrackingProfile& p) { p.initiation.max_speed = 400.0; }},
+      {"track_life", [](TrackingProfile& p) { p.track_life.confirm_m = 2; }},
+      {"branching", [](TrackingProfile& p) { p.branching.coast_sons = 2; }},
+  };
+  for (const auto& [name, change] : sections) {
+    TrackingProfile after = before;
+    change(after);
+    EXPECT_EQ(restart_reason(before, after), name);
+  }
+  // The running pipeline takes new input limits; the tracks go on.
+  TrackingProfile limits = before;
+  limits.input_limits.max_range = 500e3;
+  limits.input_limits.max_time_jump = 60.0;
+  EXPECT_EQ(restart_reason(before, limits), "");
 }
 
 }  // namespace
