@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <initializer_list>
+#include <numbers>
 #include <optional>
 #include <sstream>
 
@@ -53,23 +54,34 @@ ProfileIdentity read_identity(YamlSection s) {
   return identity;
 }
 
+// Physical limits shared by sections: no tracked object flies faster than 20 km/s (re-entry
+// is about 8 km/s) or pulls more than 1000 m/s^2 (about 100 g).
+constexpr double kMaxSpeed = 2e4;  // [m/s]
+constexpr double kMaxAccel = 1e3;  // [m/s^2]
+
 MeasurementSpec read_measurement(YamlSection s) {
   MeasurementSpec m;
   read_enum(s, "update", m.update, {MeasurementUpdate::kEkf, MeasurementUpdate::kUnscented});
+  // alpha from Wan & van der Merwe's [1e-4, 1]; beta and kappa of a few units in the
+  // literature. A smaller alpha or larger kappa collapses the sigma points or spreads them
+  // past the double range; a huge beta overflows S.
   YamlSection ut = s.section("unscented");
-  ut.number("alpha", m.unscented.alpha, Range{0.0, 1.0, true, false});
-  ut.number("beta", m.unscented.beta, Range::non_negative());
-  ut.number("kappa", m.unscented.kappa, Range::non_negative());
+  ut.number("alpha", m.unscented.alpha, Range{1e-4, 1.0});
+  ut.number("beta", m.unscented.beta, Range{0.0, 100.0});
+  ut.number("kappa", m.unscented.kappa, Range{0.0, 100.0});
   ut.finish();
+  // A millimetre to 100 km, a microradian to a half turn, a millimetre per second to the
+  // fastest target: a sigma outside squares to 0 (a singular R) or overflows.
+  const Range metres{1e-3, 1e5}, radians{1e-6, std::numbers::pi}, speed{1e-3, kMaxSpeed};
   YamlSection sigma = s.section("default_sigma");
-  sigma.number("range", m.default_sigma.range, Range::positive());
-  sigma.number("azimuth", m.default_sigma.azimuth, Range::positive());
-  sigma.number("elevation", m.default_sigma.elevation, Range::positive());
-  sigma.number("range_rate", m.default_sigma.range_rate, Range::positive());
-  sigma.number("x", m.default_sigma.x, Range::positive());
-  sigma.number("y", m.default_sigma.y, Range::positive());
-  sigma.number("z", m.default_sigma.z, Range::positive());
-  sigma.number("height", m.default_sigma.height, Range::positive());
+  sigma.number("range", m.default_sigma.range, metres);
+  sigma.number("azimuth", m.default_sigma.azimuth, radians);
+  sigma.number("elevation", m.default_sigma.elevation, radians);
+  sigma.number("range_rate", m.default_sigma.range_rate, speed);
+  sigma.number("x", m.default_sigma.x, metres);
+  sigma.number("y", m.default_sigma.y, metres);
+  sigma.number("z", m.default_sigma.z, metres);
+  sigma.number("height", m.default_sigma.height, metres);
   sigma.finish();
   s.finish();
   return m;
@@ -98,6 +110,11 @@ MotionModelSpec read_motion_model(YamlSection& s) {
                                {T::kConstantVelocity, T::kConstantAcceleration, T::kCoordinatedTurn,
                                 T::kCoordinatedTurnEstimated, T::kSinger},
                                true);
+  // Noise sigmas up to kMaxAccel (jerk: that in 0.1 s), turn-rate noise up to 1 rad/s^2; a
+  // new turn rate's spread from 1 urad/s (its variance must not vanish: P singular) to 1 rad/s;
+  // Singer's tau from 0.1 s to an hour (his 1 s turbulence to 60 s lazy turns; a tiny tau
+  // overflows 1/tau^5 in Q). Zero noise stays allowed.
+  const Range accel{0.0, kMaxAccel};
   const auto wants = [&](std::initializer_list<T> types) {
     if (!typed) return true;
     for (const T type : types) {
@@ -107,10 +124,10 @@ MotionModelSpec read_motion_model(YamlSection& s) {
   };
   if (wants(
           {T::kConstantVelocity, T::kCoordinatedTurn, T::kCoordinatedTurnEstimated, T::kSinger})) {
-    s.number("accel_sigma", m.accel_sigma, Range::non_negative(), typed);
+    s.number("accel_sigma", m.accel_sigma, accel, typed);
   }
   if (wants({T::kConstantAcceleration})) {
-    s.number("jerk_sigma", m.jerk_sigma, Range::non_negative(), typed);
+    s.number("jerk_sigma", m.jerk_sigma, Range{0.0, 10.0 * kMaxAccel}, typed);
   }
   if (wants({T::kCoordinatedTurn})) {
     if (typed) {
@@ -120,13 +137,13 @@ MotionModelSpec read_motion_model(YamlSection& s) {
     }
   }
   if (wants({T::kCoordinatedTurnEstimated})) {
-    s.number("turn_rate_sigma", m.turn_rate_sigma, Range::non_negative(), typed);
-    s.number("initial_turn_rate_sigma", m.initial_turn_rate_sigma, Range::positive());
+    s.number("turn_rate_sigma", m.turn_rate_sigma, Range{0.0, 1.0}, typed);
+    s.number("initial_turn_rate_sigma", m.initial_turn_rate_sigma, Range{1e-6, 1.0});
   }
   if (wants({T::kSinger})) {
-    s.number("time_constant", m.time_constant, Range::positive(), typed);
+    s.number("time_constant", m.time_constant, Range{0.1, 3600.0}, typed);
   }
-  s.number("vertical_accel_sigma", m.vertical_accel_sigma, Range::non_negative());
+  s.number("vertical_accel_sigma", m.vertical_accel_sigma, accel);
   s.finish();
   return m;
 }
@@ -155,18 +172,19 @@ void read_motion_models(YamlSection& root, std::vector<MotionModelSpec>& models)
   }
 }
 
-/// "auto" or a positive number.
+/// "auto" or a number from one false plot in any radar's coverage to one per square or cubic
+/// metre; a smaller density overflows a plot's likelihood ratio L / lambda.
 void read_clutter_density(YamlSection& s, std::optional<double>& out) {
   const std::string key = "clutter_density";
-  if (!s.has(key) || !s.node()[key].IsScalar()) return s.number(key, out, Range::positive());
+  const Range range{1e-20, 1.0};
+  if (!s.has(key) || !s.node()[key].IsScalar()) return s.number(key, out, range);
   std::string text;
   s.text(key, text);
   if (text == "auto") return out.reset();
   double value = 0.0;
-  if (!YAML::convert<double>::decode(s.node()[key], value) || !std::isfinite(value) ||
-      value <= 0.0) {
-    return s.error(
-        key, "expected auto or a number > 0 [1/m^2 in 2-D, 1/m^3 in 3-D], got '" + text + "'");
+  if (!YAML::convert<double>::decode(s.node()[key], value) || !range.contains(value)) {
+    return s.error(key, "expected auto or a number " + range.describe() +
+                            " [1/m^2 in 2-D, 1/m^3 in 3-D], got '" + text + "'");
   }
   out = value;
 }
@@ -209,8 +227,10 @@ AssociationSpec read_association(YamlSection s) {
               "a fixed clutter_density");
   }
   map.finish();
-  s.integer("max_exact_cluster_size", a.max_exact_cluster_size, kAtLeastOne);
-  s.integer("k_best", a.k_best, kAtLeastOne);
+  // Joint-event work: a thousand tracks in one cluster, ten thousand events (Murty's
+  // solutions and their memory grow with k).
+  s.integer("max_exact_cluster_size", a.max_exact_cluster_size, Range{1.0, 1000.0});
+  s.integer("k_best", a.k_best, Range{1.0, 1e4});
   s.finish();
   return a;
 }
@@ -218,18 +238,21 @@ AssociationSpec read_association(YamlSection s) {
 ClutterRejectionSpec read_clutter_rejection(YamlSection s) {
   ClutterRejectionSpec c;
   s.boolean("enabled", c.enabled);
-  s.number("kernel_bandwidth", c.kernel_bandwidth, Range::positive());
+  // Kernels and steps of a metre to 100 km (a tiny h makes 1 / h^2 infinite, a huge one sums
+  // every pair), a millimetre's tolerance, a thousand bins and iterations per plot.
+  const Range metres{1.0, 1e5};
+  s.number("kernel_bandwidth", c.kernel_bandwidth, metres);
   s.integer("beta", c.beta, kAtLeastOne);
-  s.integer("n_f", c.n_f, kAtLeastOne);
+  s.integer("n_f", c.n_f, Range{1.0, 1000.0});
   if (c.beta >= c.n_f) {
     s.error("beta", "expected beta < n_f (" + std::to_string(c.n_f) +
                         ") so that tau stays below f_max, got " + std::to_string(c.beta));
   }
   YamlSection ms = s.section("mean_shift");
-  ms.number("bandwidth", c.mean_shift.bandwidth, Range::positive());
-  ms.number("merge_distance", c.mean_shift.merge_distance, Range::non_negative());
-  ms.integer("max_iterations", c.mean_shift.max_iterations, kAtLeastOne);
-  ms.number("tolerance", c.mean_shift.tolerance, Range::positive());
+  ms.number("bandwidth", c.mean_shift.bandwidth, metres);
+  ms.number("merge_distance", c.mean_shift.merge_distance, Range{0.0, 1e5});
+  ms.integer("max_iterations", c.mean_shift.max_iterations, Range{1.0, 1000.0});
+  ms.number("tolerance", c.mean_shift.tolerance, Range{1e-3, 1e5});
   ms.finish();
   s.finish();
   return c;
@@ -245,10 +268,12 @@ void check_order(YamlSection& s, std::string_view key_a, double a, std::string_v
 
 InitiationSpec read_initiation(YamlSection s) {
   InitiationSpec in;
-  s.integer("m", in.m, Range{2.0});  // a plot pair is the least that gives a velocity
-  s.integer("n", in.n, Range{2.0});
-  s.number("min_speed", in.min_speed, Range::non_negative());
-  s.number("max_speed", in.max_speed, Range::positive());
+  // A plot pair is the least that gives a velocity; chains live n scans, at most 100. Speeds
+  // up to kMaxSpeed, and a speed gate of at least 0.1 m/s (a drifting iceberg).
+  s.integer("m", in.m, Range{2.0, 100.0});
+  s.integer("n", in.n, Range{2.0, 100.0});
+  s.number("min_speed", in.min_speed, Range{0.0, kMaxSpeed});
+  s.number("max_speed", in.max_speed, Range{0.1, kMaxSpeed});
   s.number("gated_seed_beta", in.gated_seed_beta, Range::probability());
   check_order(s, "m", in.m, "n", in.n, false);
   check_order(s, "min_speed", in.min_speed, "max_speed", in.max_speed, true);
@@ -271,11 +296,13 @@ TrackLifeSpec read_track_life(YamlSection s) {
   TrackLifeSpec t;
   read_enum(s, "confirmation", t.confirmation,
             {ConfirmationMethod::kMOfN, ConfirmationMethod::kExistence});
-  s.integer("confirm_m", t.confirm_m, kAtLeastOne);
-  s.integer("confirm_n", t.confirm_n, kAtLeastOne);
-  s.integer("delete_tentative_misses", t.delete_tentative_misses, kAtLeastOne);
-  s.integer("delete_confirmed_misses", t.delete_confirmed_misses, kAtLeastOne);
-  s.number("delete_position_sigma", t.delete_position_sigma, Range::positive());
+  // A track's plot history holds 32 scans (TrackLife::history); a thousand missed scans; a
+  // spread of a metre to 1000 km (beyond, a track covers any radar's whole coverage).
+  s.integer("confirm_m", t.confirm_m, Range{1.0, 32.0});
+  s.integer("confirm_n", t.confirm_n, Range{1.0, 32.0});
+  s.integer("delete_tentative_misses", t.delete_tentative_misses, Range{1.0, 1000.0});
+  s.integer("delete_confirmed_misses", t.delete_confirmed_misses, Range{1.0, 1000.0});
+  s.number("delete_position_sigma", t.delete_position_sigma, Range{1.0, 1e6});
   s.number("initial_existence", t.initial_existence, kOpenUnit);
   s.number("confirm_existence", t.confirm_existence, kOpenUnit);
   s.number("delete_existence", t.delete_existence, kOpenUnit);
@@ -290,29 +317,32 @@ TrackLifeSpec read_track_life(YamlSection s) {
 BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingProfile& p) {
   BranchingSpec b;
   s.boolean("enabled", b.enabled);
-  s.integer("max_children", b.max_children, kAtLeastOne);
+  // Branch counts bound time and memory per scan (a branch is a whole IMM track): 100 sons,
+  // 10 000 per father, 100 000 in all, 100 coast sons kept 1000 looks; accelerations up to
+  // kMaxAccel.
+  s.integer("max_children", b.max_children, Range{1.0, 100.0});
   s.number("manoeuvre_gate_probability", b.manoeuvre_gate_probability, kOpenUnit);
   const std::size_t before = errors.messages().size();
   s.texts("manoeuvre_models", b.manoeuvre_models);
   const bool names_ok = errors.messages().size() == before;
-  s.number("manoeuvre_accel_sigma", b.manoeuvre_accel_sigma, Range::positive());
+  s.number("manoeuvre_accel_sigma", b.manoeuvre_accel_sigma, Range{0.0, kMaxAccel, true});
   s.number("ambiguity_beta", b.ambiguity_beta, Range::open_probability());
   s.boolean("coast_on_last_motion", b.coast_on_last_motion);
   read_enum(s, "non_manoeuvre_gate", b.non_manoeuvre_gate,
             {NonManoeuvreGate::kUnion, NonManoeuvreGate::kLastMotion});
-  s.number("last_motion_accel_sigma", b.last_motion_accel_sigma, Range::non_negative());
+  s.number("last_motion_accel_sigma", b.last_motion_accel_sigma, Range{0.0, kMaxAccel});
   s.number("last_motion_false_plots", b.last_motion_false_plots, Range::non_negative());
   read_enum(s, "confirmation", b.confirmation,
             {ConfirmationMethod::kMOfN, ConfirmationMethod::kExistence});
-  s.integer("coast_sons", b.coast_sons, Range::non_negative());
+  s.integer("coast_sons", b.coast_sons, Range{0.0, 100.0});
   s.number("coast_son_doubt", b.coast_son_doubt, kOpenUnit);
-  s.integer("coast_son_looks", b.coast_son_looks, Range::non_negative());
+  s.integer("coast_son_looks", b.coast_son_looks, Range{0.0, 1000.0});
   YamlSection chain = s.section("detectability");
   chain.number("hide", b.detectability.hide, Range::probability());
   chain.number("reveal", b.detectability.reveal, Range::open_probability());
   chain.finish();
-  s.integer("max_branches_per_father", b.max_branches_per_father, kAtLeastOne);
-  s.integer("max_total_branches", b.max_total_branches, kAtLeastOne);
+  s.integer("max_branches_per_father", b.max_branches_per_father, Range{1.0, 1e4});
+  s.integer("max_total_branches", b.max_total_branches, Range{1.0, 1e5});
   s.finish();
 
   // The held last motion's options do nothing without it: set in the file with it off, they

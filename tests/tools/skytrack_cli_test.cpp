@@ -112,6 +112,28 @@ TEST(SkytrackTrack, ThreeDimensionalProfileOnPlotsWithoutHeightStopsWithTheReaso
   std::filesystem::remove_all(dir);
 }
 
+TEST(SkytrackCheckProfile, TinySigmaIsRefusedWithItsKeyValueAndRange) {
+  // GIVEN a profile whose range sigma is positive but absurd (squared, it is 0: a singular R)
+  const auto dir = std::filesystem::temp_directory_path() / "skytrack_cli_check_profile";
+  std::filesystem::create_directories(dir);
+  const std::string profile = (dir / "tiny.yaml").string();
+  {
+    std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(profile.c_str(), "w"), std::fclose);
+    ASSERT_TRUE(f);
+    std::fputs(
+        "profile: {name: tiny, version: 1}\nmeasurement:\n"
+        "  default_sigma: {range: 1.0e-300}\n",
+        f.get());
+  }
+  // WHEN check-profile reads it
+  const RunResult r = run("check-profile " + profile);
+  // THEN it fails, naming the key, the value and the accepted range
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("tiny.yaml:3: measurement.default_sigma.range: expected a "
+                                  "number in [0.001, 100000], got 1e-300"));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(SkytrackEval, MissingFileFailsWithItsName) {
   const RunResult r = run("eval --truth /nonexistent/t.jsonl --tracks /nonexistent/k.jsonl");
   EXPECT_NE(r.exit_code, 0);

@@ -47,7 +47,7 @@ struct MeasurementSigmas {
 
 /// Sigma-point scaling of the unscented update (Wan & van der Merwe 2000).
 struct UnscentedSpec {
-  double alpha = 1.0;  // spread, in (0, 1]
+  double alpha = 1.0;  // spread, in [1e-4, 1]
   double beta = 2.0;   // prior knowledge; 2 is optimal for Gaussians
   double kappa = 0.0;  // >= 0 keeps every weight set valid whatever the state size
   bool operator==(const UnscentedSpec&) const = default;
