@@ -39,11 +39,14 @@ std::optional<std::string> invalid_plot_reason(const Plot& plot,
   for (const auto* v : {&s.range, &s.azimuth, &s.elevation, &s.range_rate, &s.x, &s.y, &s.z}) {
     if (*v && !(std::isfinite(**v) && **v > 0.0)) return "sigma not positive and finite";
   }
+  // The profile's own bounds on its default sigmas: below them a variance squares to zero.
   for (const auto* v : {&s.range, &s.range_rate, &s.x, &s.y, &s.z}) {
     if (*v && **v > limits.max_range) return "sigma beyond max_range";
+    if (*v && **v < 1e-3) return "sigma below 1 mm (or 1 mm/s)";
   }
   for (const auto* v : {&s.azimuth, &s.elevation}) {
     if (*v && **v > std::numbers::pi) return "angle sigma beyond pi";
+    if (*v && **v < 1e-6) return "angle sigma below 1 microradian";
   }
   if (plot.form == PlotForm::kPolar) {
     if (!std::isfinite(plot.range) || !std::isfinite(plot.azimuth) || !finite(plot.elevation) ||

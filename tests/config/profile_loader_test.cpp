@@ -154,9 +154,8 @@ TEST(ProfileLoader, ClutterMapCellsHavePhysicalBounds) {
 }
 
 TEST(ProfileLoader, InputLimitsAreReadAndPhysicallyBounded) {
-  const auto profile =
-      parse_profile(kHeader + std::string("input_limits: {max_range: 500e3, max_time_jump: 60}\n"),
-                    "p.yaml");
+  const auto profile = parse_profile(
+      kHeader + std::string("input_limits: {max_range: 500e3, max_time_jump: 60}\n"), "p.yaml");
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_EQ(profile->input_limits.max_range, 500e3);
   EXPECT_EQ(profile->input_limits.max_time_jump, 60.0);

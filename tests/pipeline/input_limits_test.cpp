@@ -62,6 +62,11 @@ TEST(InputLimits, PlotsBeyondThePhysicalLimitsAreDroppedAndCountedByReason) {
   late.time = 1000.0 + kFiftyYears;
   Plot vague = cartesian(11, 1e3, 1e3);
   vague.sigma.x = 1e30;
+  Plot sharp = cartesian(13, 1e3, 1e3);  // its variance would square to zero
+  sharp.sigma.y = 1e-300;
+  Plot pinpoint = spun;
+  pinpoint.azimuth = 0.3;
+  pinpoint.sigma.azimuth = 1e-200;
   const Plot good = cartesian(12, 1e3, 1e3);
   // THEN each is refused with its reason, the good one passes
   const auto why = [&](const Plot& p) {
@@ -74,6 +79,8 @@ TEST(InputLimits, PlotsBeyondThePhysicalLimitsAreDroppedAndCountedByReason) {
   EXPECT_EQ(why(distant), "range beyond max_range");
   EXPECT_EQ(why(late), "plot time beyond max_time_jump of its batch's");
   EXPECT_EQ(why(vague), "sigma beyond max_range");
+  EXPECT_EQ(why(sharp), "sigma below 1 mm (or 1 mm/s)");
+  EXPECT_EQ(why(pinpoint), "angle sigma below 1 microradian");
   EXPECT_FALSE(why(good));
   // AND a radar that reports azimuth in [-pi, pi) or [0, 2pi) is served either way
   Plot west = spun;
