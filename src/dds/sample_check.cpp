@@ -97,7 +97,8 @@ class Walker {
   bool booleans(std::uint64_t count, std::size_t end);
   bool enums(std::uint64_t count, std::uint32_t max, std::size_t end);
   bool string(std::size_t end);
-  /// Reads a DHEADER and returns the end of the region it delimits (0 on failure).
+  /// Reads a DHEADER and returns the end of the region it delimits, or 0 on failure (a
+  /// region ends after its own header, never at 0).
   std::size_t region(std::size_t end);
   bool fail(std::string what);
   static std::string bytes_left(std::uint64_t need, std::size_t left);
@@ -182,11 +183,12 @@ bool Walker::sequence(const std::uint32_t* ops, std::size_t end) {
     return fail(std::to_string(count) + " elements cannot fit in " + std::to_string(end - off_) +
                 " bytes");
   }
-  const std::uint32_t* element = ops + DDS_OP_ADR_JSR(ops[3]);
+  // Struct elements: the op after offset and element size holds the elements' ops offset.
+  const std::uint32_t* element = sub == DDS_OP_VAL_STU ? ops + DDS_OP_ADR_JSR(ops[3]) : nullptr;
   for (std::uint32_t i = 0; i < count; ++i) {
     path_[depth_ - 1].element = i;
     const std::size_t before = item_ = off_;
-    if (sub == DDS_OP_VAL_STR ? !string(end) : !type(element, end)) return false;
+    if (element == nullptr ? !string(end) : !type(element, end)) return false;
     if (off_ == before) return fail("an element takes no bytes");
   }
   path_[depth_ - 1].element = -1;
