@@ -19,6 +19,7 @@
 #include "skytrack/daemon/scan_queue.hpp"
 #include "skytrack/daemon/status_collector.hpp"
 #include "skytrack/daemon/udp_input.hpp"
+#include "skytrack/dds/checked_take.hpp"
 #include "skytrack/dds/conversion.hpp"
 #include "skytrack/pipeline/pipeline.hpp"
 
@@ -85,6 +86,8 @@ struct Daemon::Impl {
   /// The scan in a sample, or nullopt when it is rejected (counted and logged).
   std::optional<QueuedScan> convert(const skytrack_dds_PlotBatch& batch,
                                     Clock::time_point received);
+  /// Counts a rejected sample under `reason` and logs it (rate-limited).
+  void reject_sample(std::string_view reason, const std::string& which, const std::string& detail);
   void track_loop();
   void track_one(QueuedScan& item);
   void apply_pending_profile();
@@ -107,7 +110,8 @@ struct Daemon::Impl {
     dds_time_t written = 0;  // source timestamp
     QueuedScan item;
   };
-  std::vector<Arrival> arrivals;  // reception thread only
+  std::vector<Arrival> arrivals;     // reception thread only
+  dds::PlotBatchSample plot_sample;  // reception thread: the sample being converted
 
   std::mutex pending_mutex;
   std::optional<Pipeline> pending;  // a reloaded pipeline, applied before the next scan
@@ -126,12 +130,6 @@ struct Daemon::Impl {
   RateLimiter write_log;
   RateLimiter asterix_log;  // UDP input thread
 };
-
-namespace {
-
-constexpr std::size_t kTakeBatch = 32;
-
-}  // namespace
 
 void Daemon::Impl::receive_loop() {
   for (;;) {
@@ -152,27 +150,21 @@ void Daemon::Impl::receive_loop() {
 void Daemon::Impl::receive_batch() {
   // Take everything available, then restore the order the samples were written in: a take
   // returns samples grouped by instance (sensor), which would reorder the sensors' scans
-  // against each other and so change what the shared tracker sees.
+  // against each other and so change what the shared tracker sees. Every sample is checked
+  // as bytes before Cyclone deserialises it (take_checked).
   arrivals.clear();
-  std::array<void*, kTakeBatch> samples{};
-  std::array<dds_sample_info_t, kTakeBatch> infos{};
   const Clock::time_point received = Clock::now();
-  for (;;) {
-    const dds_return_t n = dds_take(plots_reader, samples.data(), infos.data(), kTakeBatch,
-                                    static_cast<std::uint32_t>(kTakeBatch));
-    if (n <= 0) break;
-    for (dds_return_t i = 0; i < n; ++i) {
-      const dds_sample_info_t& info = infos[static_cast<std::size_t>(i)];
-      if (!info.valid_data) continue;  // dispose / unregister
-      if (auto item = convert(
-              *static_cast<const skytrack_dds_PlotBatch*>(samples[static_cast<std::size_t>(i)]),
-              received)) {
-        arrivals.push_back({info.source_timestamp, std::move(*item)});
-      }
-    }
-    dds_return_loan(plots_reader, samples.data(), n);
-    if (static_cast<std::size_t>(n) < kTakeBatch) break;
-  }
+  dds::take_checked(
+      plots_reader, plot_sample,
+      [&](const skytrack_dds_PlotBatch& batch, const dds_sample_info_t& info) {
+        if (auto item = convert(batch, received)) {
+          arrivals.push_back({info.source_timestamp, std::move(*item)});
+        }
+      },
+      [&](const dds_sample_info_t& info, const Error& error) {
+        reject_sample(reason::kMalformedSample,
+                      "from writer " + std::to_string(info.publication_handle), error.message);
+      });
   std::stable_sort(arrivals.begin(), arrivals.end(),
                    [](const Arrival& a, const Arrival& b) { return a.written < b.written; });
   for (Arrival& arrival : arrivals) enqueue(std::move(arrival.item));
@@ -228,25 +220,30 @@ void Daemon::Impl::start_udp() {
 
 std::optional<QueuedScan> Daemon::Impl::convert(const skytrack_dds_PlotBatch& batch,
                                                 Clock::time_point received) {
-  std::string_view reject;
-  std::string detail;
   QueuedScan item{{}, received};
+  const auto which = [&batch] {
+    return "of sensor " + std::to_string(batch.sensor) + " scan " + std::to_string(batch.scan);
+  };
   if (batch.plot_ids._length > static_cast<std::uint32_t>(config.max_plots_per_scan)) {
-    reject = reason::kTooManyPlots;
-    detail = std::to_string(batch.plot_ids._length) + " plots, at most " +
-             std::to_string(config.max_plots_per_scan);
-  } else if (auto ok = dds::from_dds(batch, item.scan); !ok) {
-    reject = reason::kMalformedSample;
-    detail = ok.error().message;
+    reject_sample(reason::kTooManyPlots, which(),
+                  std::to_string(batch.plot_ids._length) + " plots, at most " +
+                      std::to_string(config.max_plots_per_scan));
+    return std::nullopt;
   }
-  if (reject.empty()) return item;
-  status.scan_rejected(reject);
+  if (auto ok = dds::from_dds(batch, item.scan); !ok) {
+    reject_sample(reason::kMalformedSample, which(), ok.error().message);
+    return std::nullopt;
+  }
+  return item;
+}
+
+void Daemon::Impl::reject_sample(std::string_view reason, const std::string& which,
+                                 const std::string& detail) {
+  status.scan_rejected(reason);
   if (const auto count = bad_sample_log.allow()) {
-    spdlog::warn(
-        "plot batch of sensor {} scan {} rejected: {}: {} ({} rejected since last message)",
-        batch.sensor, batch.scan, reject, detail, *count);
+    spdlog::warn("plot batch {} rejected: {}: {} ({} rejected since last message)", which, reason,
+                 detail, *count);
   }
-  return std::nullopt;
 }
 
 void Daemon::Impl::apply_pending_profile() {

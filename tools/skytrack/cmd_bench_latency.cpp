@@ -4,7 +4,6 @@
 // p50/p99/max over the scans after the warm-up. A benchmark tool, not a test:
 // tools/experiments/daemon-latency.sh runs it next to ddsperf for the floor.
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -18,6 +17,7 @@
 #include "dds_tool.hpp"
 #include "skytrack/daemon/dds_session.hpp"
 #include "skytrack/daemon/latency_stats.hpp"
+#include "skytrack/dds/checked_take.hpp"
 #include "skytrack/dds/conversion.hpp"
 
 namespace skytrack::tool {
@@ -72,20 +72,15 @@ int run_bench(const BenchOptions& o) {
   const dds_entity_t waitset = dds_create_waitset(session.participant());
   dds_waitset_attach(waitset, dds_create_readcondition(reader, DDS_ANY_STATE), 0);
   // Drain historical (transient-local) samples first.
-  std::array<void*, 16> samples{};
-  std::array<dds_sample_info_t, 16> infos{};
+  dds::TrackBatchSample answer;
   const auto drain = [&](std::uint64_t wanted) {
     bool found = false;
-    dds_return_t n = 0;
-    while ((n = dds_take(reader, samples.data(), infos.data(), 16, 16)) > 0) {
-      for (dds_return_t i = 0; i < n; ++i) {
-        const auto& b =
-            *static_cast<const skytrack_dds_TrackBatch*>(samples[static_cast<std::size_t>(i)]);
-        found = found || (infos[static_cast<std::size_t>(i)].valid_data && b.sensor == o.sensor &&
-                          b.scan == wanted);
-      }
-      dds_return_loan(reader, samples.data(), n);
-    }
+    dds::take_checked(
+        reader, answer,
+        [&](const skytrack_dds_TrackBatch& b, const dds_sample_info_t&) {
+          found = found || (b.sensor == o.sensor && b.scan == wanted);
+        },
+        [](const dds_sample_info_t&, const Error&) {});
     return found;
   };
   drain(~0ull);

@@ -1,7 +1,6 @@
 // `skytrack record`: subscribes to TrackBatch (and optionally PlotBatch) and writes the
 // CONTRACTS JSON Lines, so a live session can be evaluated with `skytrack eval` and replayed.
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <memory>
 #include <optional>
@@ -14,6 +13,7 @@
 #include "commands.hpp"
 #include "dds_tool.hpp"
 #include "skytrack/daemon/dds_session.hpp"
+#include "skytrack/dds/checked_take.hpp"
 #include "skytrack/dds/conversion.hpp"
 #include "skytrack/io/jsonl_writer.hpp"
 
@@ -30,31 +30,26 @@ struct RecordOptions {
   bool quiet = false;
 };
 
-/// Takes every sample of `reader`, converts it and writes it in the order the samples were
-/// written (a take groups samples by instance, i.e. by sensor); returns the number written.
+/// Takes every sample of `reader` (checked as bytes before Cyclone deserialises it), converts
+/// it and writes it in the order the samples were written (a take groups samples by instance,
+/// i.e. by sensor); returns the number written. Malformed and unconvertible samples are
+/// counted and the first 20 printed.
 template <class DdsType, class Convert>
-std::size_t drain(dds_entity_t reader, io::JsonLinesWriter& out, std::size_t& failed,
-                  Convert convert) {
+std::size_t drain(dds_entity_t reader, dds::OwnedSample<DdsType>& scratch, io::JsonLinesWriter& out,
+                  std::size_t& failed, Convert convert) {
   using Record = typename decltype(convert(std::declval<const DdsType&>()))::value_type;
   std::vector<std::pair<dds_time_t, Record>> records;
-  std::array<void*, 32> samples{};
-  std::array<dds_sample_info_t, 32> infos{};
-  for (;;) {
-    const dds_return_t n = dds_take(reader, samples.data(), infos.data(), 32, 32);
-    if (n <= 0) break;
-    for (dds_return_t i = 0; i < n; ++i) {
-      const dds_sample_info_t& info = infos[static_cast<std::size_t>(i)];
-      if (!info.valid_data) continue;
-      auto record = convert(*static_cast<const DdsType*>(samples[static_cast<std::size_t>(i)]));
-      if (!record) {
-        if (failed++ < 20) fmt::print(stderr, "skytrack record: {}\n", record.error().message);
-        continue;
-      }
-      records.emplace_back(info.source_timestamp, std::move(*record));
-    }
-    dds_return_loan(reader, samples.data(), n);
-    if (n < 32) break;
-  }
+  const auto refuse = [&failed](const std::string& why) {
+    if (failed++ < 20) fmt::print(stderr, "skytrack record: {}\n", why);
+  };
+  dds::take_checked(
+      reader, scratch,
+      [&](const DdsType& sample, const dds_sample_info_t& info) {
+        auto record = convert(sample);
+        if (!record) return refuse(record.error().message);
+        records.emplace_back(info.source_timestamp, std::move(*record));
+      },
+      [&](const dds_sample_info_t&, const Error& e) { refuse("malformed sample: " + e.message); });
   std::stable_sort(records.begin(), records.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   std::size_t written = 0;
@@ -70,6 +65,8 @@ struct Recorder {
   io::JsonLinesWriter& track_out;
   io::JsonLinesWriter* plot_out = nullptr;
   std::size_t frames = 0, scans = 0, failed = 0;
+  dds::TrackBatchSample track_sample{};
+  dds::PlotBatchSample plot_sample{};
 
   void run(dds_entity_t waitset) {
     bool matched = false;
@@ -85,12 +82,12 @@ struct Recorder {
           fmt::print(stderr, "skytrack record: matched a TrackBatch writer\n");
         }
       }
-      std::size_t got = drain<skytrack_dds_TrackBatch>(
-          tracks, track_out, failed, [](const auto& b) { return dds::from_dds(b); });
+      std::size_t got = drain(tracks, track_sample, track_out, failed,
+                              [](const auto& b) { return dds::from_dds(b); });
       frames += got;
       if (plots > 0) {
-        const std::size_t p = drain<skytrack_dds_PlotBatch>(
-            plots, *plot_out, failed, [](const auto& b) { return dds::from_dds(b); });
+        const std::size_t p = drain(plots, plot_sample, *plot_out, failed,
+                                    [](const auto& b) { return dds::from_dds(b); });
         scans += p;
         got += p;
       }
@@ -143,8 +140,9 @@ int run_record(const RecordOptions& options) {
   const bool ok = track_out->close() && (!plot_out || plot_out->close());
   fmt::print(stderr, "skytrack record: {} track batches{} written{}\n", recorder.frames,
              plot_out ? fmt::format(", {} plot batches", recorder.scans) : std::string(),
-             recorder.failed ? fmt::format(", {} samples not convertible", recorder.failed)
-                             : std::string());
+             recorder.failed
+                 ? fmt::format(", {} samples malformed or not convertible", recorder.failed)
+                 : std::string());
   return ok ? 0 : fail("writing the output failed");
 }
 

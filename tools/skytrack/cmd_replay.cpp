@@ -18,6 +18,7 @@
 #include "progress_bar.hpp"
 #include "scan_source.hpp"
 #include "skytrack/daemon/dds_session.hpp"
+#include "skytrack/dds/checked_take.hpp"
 #include "skytrack/dds/conversion.hpp"
 
 namespace skytrack::tool {
@@ -84,27 +85,20 @@ class Replayer {
   std::optional<double> first_time_;
   double last_time_ = 0.0;
   std::uint64_t max_scan_ = 0;
-  std::size_t scans_ = 0, plots_ = 0, unanswered_ = 0, lines_rejected_ = 0;
+  std::size_t scans_ = 0, plots_ = 0, unanswered_ = 0, lines_rejected_ = 0, malformed_ = 0;
   InFlight in_flight_;
   dds::PlotBatchSample sample_;
+  dds::TrackBatchSample answer_;
 };
 
 void Replayer::take_answers() {
-  std::array<void*, 16> samples{};
-  std::array<dds_sample_info_t, 16> infos{};
-  for (;;) {
-    const dds_return_t n = dds_take(tracks_, samples.data(), infos.data(), 16, 16);
-    if (n <= 0) return;
-    for (dds_return_t i = 0; i < n; ++i) {
-      const auto& info = infos[static_cast<std::size_t>(i)];
-      // Historical samples (transient-local) from before this replay answer nothing.
-      if (!info.valid_data || info.source_timestamp < start_dds_) continue;
-      const auto& b =
-          *static_cast<const skytrack_dds_TrackBatch*>(samples[static_cast<std::size_t>(i)]);
-      in_flight_.answered(b.sensor, b.scan);
-    }
-    dds_return_loan(tracks_, samples.data(), n);
-  }
+  dds::take_checked(
+      tracks_, answer_,
+      [this](const skytrack_dds_TrackBatch& b, const dds_sample_info_t& info) {
+        // Historical samples (transient-local) from before this replay answer nothing.
+        if (info.source_timestamp >= start_dds_) in_flight_.answered(b.sensor, b.scan);
+      },
+      [this](const dds_sample_info_t&, const Error&) { ++malformed_; });
 }
 
 void Replayer::wait_in_flight(std::size_t limit) {
@@ -214,12 +208,13 @@ int Replayer::run() {
   if (rate_ == 0.0) wait_in_flight(1);  // the last answers, so "done" means processed
   const double wall = std::chrono::duration<double>(Clock::now() - start_wall_).count();
   fmt::print(
-      stderr, "skytrack replay: {} scans ({} plots) in {:.2f} s, {} pass(es), {} {} rejected{}\n",
+      stderr, "skytrack replay: {} scans ({} plots) in {:.2f} s, {} pass(es), {} {} rejected{}{}\n",
       scans_, plots_, wall, passes, lines_rejected_,
       options_.asterix.empty() ? "lines" : "ASTERIX errors",
       rate_ == 0.0
           ? fmt::format(", {} scans unanswered by a TrackBatch", unanswered_ + in_flight_.size())
-          : "");
+          : "",
+      malformed_ ? fmt::format(", {} malformed TrackBatch samples refused", malformed_) : "");
   return 0;
 }
 

@@ -1,6 +1,5 @@
 // `skytrack status`: prints the latest TrackerStatus of every running daemon as one JSON
 // object per line (transient-local: a status published before we joined arrives at once).
-#include <array>
 #include <chrono>
 #include <map>
 #include <memory>
@@ -12,6 +11,7 @@
 #include "commands.hpp"
 #include "dds_tool.hpp"
 #include "skytrack/daemon/dds_session.hpp"
+#include "skytrack/dds/checked_take.hpp"
 #include "skytrack/dds/conversion.hpp"
 
 namespace skytrack::tool {
@@ -85,19 +85,19 @@ int run_status(const StatusOptions& options) {
   const auto wait = std::chrono::duration<double>(options.wait);
   const auto follow = std::chrono::duration<double>(options.follow);
   std::map<std::string, TrackerStatusReport> latest;
+  dds::TrackerStatusSample sample;
   while (!stop_requested()) {
-    std::array<void*, 8> samples{};
-    std::array<dds_sample_info_t, 8> infos{};
-    const dds_return_t n = dds_take(*reader, samples.data(), infos.data(), 8, 8);
-    for (dds_return_t i = 0; i < n; ++i) {
-      if (!infos[static_cast<std::size_t>(i)].valid_data) continue;
-      auto report = dds::from_dds(
-          *static_cast<const skytrack_dds_TrackerStatus*>(samples[static_cast<std::size_t>(i)]));
-      if (!report) continue;
-      if (options.follow > 0.0) fmt::print("{}\n", status_to_json(*report));
-      latest[report->instance] = std::move(*report);
-    }
-    if (n > 0) dds_return_loan(*reader, samples.data(), n);
+    dds::take_checked(
+        *reader, sample,
+        [&](const skytrack_dds_TrackerStatus& s, const dds_sample_info_t&) {
+          auto report = dds::from_dds(s);
+          if (!report) return;
+          if (options.follow > 0.0) fmt::print("{}\n", status_to_json(*report));
+          latest[report->instance] = std::move(*report);
+        },
+        [](const dds_sample_info_t&, const Error& e) {
+          fmt::print(stderr, "skytrack status: malformed sample refused: {}\n", e.message);
+        });
     dds_requested_deadline_missed_status_t missed{};
     if (options.follow > 0.0 &&
         dds_get_requested_deadline_missed_status(*reader, &missed) == DDS_RETCODE_OK &&
