@@ -281,13 +281,8 @@ void Daemon::Impl::track_one(QueuedScan& item) {
     }
     return;
   }
-  if (result.clock_restarted) {
-    spdlog::warn(
-        "sensor {} scan {} (t = {}): the sensor's clock restarted (three batches in a "
-        "row that follow each other, not its latest); {}",
-        scan.sensor, scan.scan, scan.time,
-        result.tracks_restarted ? "all tracks restart"
-                                : "its looks restart, on the other sensors' clock");
+  if (const std::string change = timeline_change(result); !change.empty()) {
+    spdlog::warn("sensor {} scan {} (t = {}): {}", scan.sensor, scan.scan, scan.time, change);
   }
   if (result.report.plots_invalid > 0) {
     for (const Plot& plot : scan.plots) {

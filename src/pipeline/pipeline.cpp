@@ -73,6 +73,18 @@ std::optional<std::string> invalid_plot_reason(const Plot& plot,
   return std::nullopt;
 }
 
+std::string timeline_change(const ScanResult& result) {
+  if (!result.accepted || !(result.clock_restarted || result.tracks_restarted)) return {};
+  std::string what = result.clock_restarted
+                         ? "the sensor's clock restarted (three batches in a row that follow "
+                           "each other, not its latest)"
+                         : "the sensor's clock disagreed with the tracks' time";
+  return what + (result.tracks_restarted
+                     ? "; no other sensor is on the tracks' time (or none was heard over "
+                       "max_time_jump of its clock): all tracks restart on its clock"
+                     : "; its looks restart, on the other sensors' clock");
+}
+
 int tracker_dimension(const config::TrackingProfile& profile, const PlotScan& first) {
   if (profile.dimension == 2 || profile.dimension == 3) return profile.dimension;
   return carries_height(first) ? 3 : 2;
@@ -98,24 +110,19 @@ Expected<Pipeline> Pipeline::create(const config::TrackingProfile& profile) {
   return Pipeline(profile);
 }
 
-void Pipeline::restart_clock(std::uint32_t id, double time) {
-  ++counters_.clock_restarts;
-  result_.clock_restarted = true;
-  // The sensor's new clock may agree with the other sensors' (it was its old one that was
-  // wrong): the tracks go on, the sensor's looks start again. Otherwise no track's time
-  // compares with the batches to come.
-  const bool agrees = std::any_of(sensors_.begin(), sensors_.end(), [&](const auto& other) {
-    const auto& latest = other.second.clock.latest();
-    return other.first != id && latest &&
-           std::abs(latest->time - time) <= profile_.input_limits.max_time_jump;
-  });
-  if (agrees) {
-    sensors_.at(id).feed = SensorFeed(profile_.antenna);
-    return;
+bool Pipeline::place_on_timeline(const PlotScan& scan, bool restarted) {
+  using enum SensorTimeline::Placement;
+  const auto placement =
+      timeline_.place(scan.sensor, scan.time, restarted, profile_.input_limits.max_time_jump);
+  if (placement == kHeld) return false;
+  if (placement == kRejoins) sensors_.at(scan.sensor).feed = SensorFeed(profile_.antenna);
+  if (placement == kNewTimeline) {
+    // No track's time compares with this sensor's batches.
+    result_.tracks_restarted = true;
+    tracker_.reset();
+    for (auto& [id, state] : sensors_) state.feed = SensorFeed(profile_.antenna);
   }
-  result_.tracks_restarted = true;
-  tracker_.reset();
-  for (auto& [other, state] : sensors_) state.feed = SensorFeed(profile_.antenna);
+  return true;
 }
 
 void Pipeline::set_input_limits(const config::InputLimitsSpec& limits) {
@@ -165,7 +172,16 @@ const ScanResult& Pipeline::process(const PlotScan& scan) {
   const BatchClock::Verdict verdict =
       sensor.clock.admit(scan.scan, scan.time, profile_.input_limits.max_time_jump);
   if (!verdict.refusal.empty()) return reject(verdict.refusal, &sensor.clock);
-  if (verdict.restarted) restart_clock(scan.sensor, scan.time);
+  if (verdict.restarted) {
+    ++counters_.clock_restarts;
+    result_.clock_restarted = true;
+  }
+  if (!place_on_timeline(scan, verdict.restarted)) {
+    reject(batch_reason::kClockDisagrees);
+    result_.rejection += " (t = " + std::to_string(scan.time) + " s; the tracks' time: " +
+                         std::to_string(*timeline_.time()) + " s)";
+    return result_;
+  }
   const PlotScan& usable = without_invalid_plots(scan);
   if (!tracker_) {
     // The first batch with plots sets the dimension (an empty one says nothing of it).
@@ -182,6 +198,7 @@ const ScanResult& Pipeline::process(const PlotScan& scan) {
   }
   if (tracker_) {
     sensor.feed.feed(usable, *tracker_, result_.frame, result_.report);
+    timeline_.fed(scan.sensor, scan.time);
   } else {
     result_.frame = TrackFrame{};
     result_.frame.sensor = usable.sensor;

@@ -190,5 +190,43 @@ TEST(InputLimits, AnotherSensorsCorruptTimeLeavesASensorsTracksUnchanged) {
   EXPECT_FALSE(reference->process(clean_batch(15)).frame.tracks.empty());
 }
 
+TEST(InputLimits, AnotherSensorsHijackedClockNeitherWipesNorMovesTheTracks) {
+  // GIVEN sensor 1's stream with sensor 2's empty batches (a sector away) on the same clock,
+  // and the same with three of sensor 2's batches dated fifty years ahead, each following
+  // the one before: enough to restart sensor 2's own clock
+  const config::TrackingProfile profile = testing::test_profile();
+  auto reference = Pipeline::create(profile);
+  auto tested = Pipeline::create(profile);
+  ASSERT_TRUE(reference && tested);
+  const auto other = [](std::uint64_t k) {
+    PlotScan scan = clean_batch(k, 2);
+    scan.plots.clear();
+    scan.coverage = AzimuthSector{2.5, 3.0};
+    return scan;
+  };
+  std::size_t held = 0;
+  for (std::uint64_t k = 0; k < 24; ++k) {
+    const TrackFrame expected = reference->process(clean_batch(k)).frame;
+    // THEN sensor 1's tracks are the same throughout (before the fix they all restarted
+    // when sensor 2's clock did, and sensor 1's batches then went to tracks 50 years ahead)
+    EXPECT_EQ(tested->process(clean_batch(k)).frame.tracks, expected.tracks) << "scan " << k;
+    reference->process(other(k));
+    if (k >= 8 && k < 11) {
+      PlotScan hijack = other(100 + k);
+      hijack.time += kFiftyYears;
+      const ScanResult& r = tested->process(hijack);
+      EXPECT_FALSE(r.accepted);
+      if (r.reason == batch_reason::kClockDisagrees) ++held;
+    } else {
+      // AND sensor 2's real batches, refused after the hijack by its own clock, restart it
+      // on sensor 1's time three batches later and are tracked again
+      tested->process(other(k < 11 ? k : 200 + k));
+    }
+  }
+  EXPECT_EQ(held, 1u);  // the third, which restarted sensor 2's clock onto the hijacked time
+  EXPECT_EQ(tested->counters().clock_restarts, 2u);
+  EXPECT_FALSE(reference->process(clean_batch(24)).frame.tracks.empty());
+}
+
 }  // namespace
 }  // namespace skytrack

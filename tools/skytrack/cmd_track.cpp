@@ -97,10 +97,9 @@ int run_track(const TrackOptions& options) {
         fmt::print(stderr, "\n{}: batch skipped: {}\n", options.plots, result.rejection);
       continue;
     }
-    if (result.clock_restarted) {
-      fmt::print(stderr, "\n{}: sensor {} batch {} (t = {}): the sensor's clock restarted; {}\n",
-                 options.plots, scan->sensor, scan->scan, scan->time,
-                 result.tracks_restarted ? "all tracks restart" : "its looks restart");
+    if (const std::string change = timeline_change(result); !change.empty()) {
+      fmt::print(stderr, "\n{}: sensor {} batch {} (t = {}): {}\n", options.plots, scan->sensor,
+                 scan->scan, scan->time, change);
     }
     initiated += static_cast<std::size_t>(result.report.initiated);
     max_tracks = std::max(max_tracks, result.frame.tracks.size());

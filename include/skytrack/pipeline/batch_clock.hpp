@@ -19,6 +19,7 @@ inline constexpr std::string_view kDuplicateScan = "duplicate scan";
 inline constexpr std::string_view kOutOfOrderScan = "out-of-order scan";
 inline constexpr std::string_view kTimeBackwards = "time goes backwards";
 inline constexpr std::string_view kTimeJump = "time jumps forward";
+inline constexpr std::string_view kClockDisagrees = "clock disagrees with the other sensors";
 }  // namespace batch_reason
 
 class BatchClock {

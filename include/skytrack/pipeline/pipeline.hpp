@@ -16,6 +16,7 @@
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/pipeline/batch_clock.hpp"
 #include "skytrack/pipeline/sensor_feed.hpp"
+#include "skytrack/pipeline/sensor_timeline.hpp"
 #include "skytrack/tracking/point_tracker.hpp"
 
 namespace skytrack {
@@ -39,8 +40,8 @@ struct ScanResult {
   std::string rejection;          // why the batch was skipped, in full
   std::string_view reason;        // its short fixed name (batch_reason, kProfileRefusal)
   bool refused = false;           // skipped because the profile cannot serve these plots
-  bool clock_restarted = false;   // accepted as a restart of its sensor's clock (batch_clock.hpp)
-  bool tracks_restarted = false;  // ... which no other sensor's clock agreed with: tracks restart
+  bool clock_restarted = false;   // its sensor's clock restarted (batch_clock.hpp)
+  bool tracks_restarted = false;  // every track restarted on its time (sensor_timeline.hpp)
   TrackFrame frame;               // valid when accepted
   ScanReport report;
 };
@@ -59,9 +60,9 @@ class Pipeline {
 
  private:
   explicit Pipeline(const config::TrackingProfile& profile) : profile_(profile) {}
-  /// Sensor `id`'s clock restarted at `time`: its looks start again, and the tracks too
-  /// unless another sensor's clock agrees with the new one.
-  void restart_clock(std::uint32_t id, double time);
+  /// Places the batch on the tracks' time (sensor_timeline.hpp): restarts its sensor's looks,
+  /// or every track and look, as the placement says; false when the sensor is held.
+  bool place_on_timeline(const PlotScan& scan, bool restarted);
   /// The batch itself when all its plots are usable, else a copy without the bad ones.
   const PlotScan& without_invalid_plots(const PlotScan& scan);
 
@@ -72,10 +73,15 @@ class Pipeline {
     SensorFeed feed;
   };
   std::map<std::uint32_t, SensorState> sensors_;
+  SensorTimeline timeline_;
   PipelineCounters counters_;
   PlotScan clean_;  // a batch without its invalid plots, when it had some (reused)
   ScanResult result_;
 };
+
+/// What an accepted batch's clock restart or new timeline did to the tracks, for the log
+/// (empty when nothing).
+std::string timeline_change(const ScanResult& result);
 
 /// The tracker dimension for a profile and the first batch: the profile's, or (auto) 3 when
 /// the plots carry height (elevation, z, or a polar plot's flight level), else 2.
