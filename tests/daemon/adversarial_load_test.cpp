@@ -3,6 +3,7 @@
 // completes, the daemon survives and stops cleanly, and the report names what it measured.
 #include <cstdlib>
 #include <filesystem>
+#include <regex>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -78,6 +79,14 @@ TEST(AdversarialLoad, ReducedRunCompletesAndReportsEveryPhase) {
   EXPECT_THAT(out, HasSubstr("too many plots: 1"));
   EXPECT_THAT(out, HasSubstr("malformed sample: "));
   EXPECT_THAT(out, HasSubstr("time jumps forward: "));
+  EXPECT_THAT(out, HasSubstr("clock disagrees with the other sensors: 1"));
+  // ... and the good sensor's tracks were those of its run alone, in every frame, the clock
+  // hijack included (before the sensor timeline, the hijack restarted them)
+  std::smatch unchanged;
+  ASSERT_TRUE(std::regex_search(out, unchanged,
+                                std::regex(R"(sensor 1 frames unchanged: (\d+) / (\d+) \()")))
+      << out;
+  EXPECT_EQ(unchanged[1], unchanged[2]) << out;
   std::filesystem::remove_all(dir);
 }
 
