@@ -1,5 +1,6 @@
 // Track output lines (CONTRACTS.md §3). Any invalid track, association or event rejects the
 // line, so an evaluation never scores a partial picture.
+#include <limits>
 #include <string>
 
 #include "json_fields.hpp"
@@ -98,6 +99,10 @@ Expected<TrackReport> parse_track(const element& value, const std::string& path)
   if (!members) return unexpected(members.error());
   if (*members) {
     if (**members < 0) return make_error(join(path, "members") + ": negative");
+    if (**members > std::numeric_limits<int>::max()) {
+      return make_error(join(path, "members") + ": " + std::to_string(**members) +
+                        " is beyond " + std::to_string(std::numeric_limits<int>::max()));
+    }
     track.members = static_cast<int>(**members);
   }
   return track;

@@ -1,5 +1,6 @@
 // Ground-truth lines (CONTRACTS.md §2). Any invalid object rejects the whole line: an
 // evaluation against half a truth frame would be silently wrong.
+#include <limits>
 #include <string>
 
 #include "json_fields.hpp"
@@ -44,6 +45,10 @@ Expected<TruthObject> parse_truth_object(const element& value, const std::string
   if (!members) return unexpected(members.error());
   if (*members) {
     if (**members < 0) return make_error(join(path, "members") + ": negative");
+    if (**members > std::numeric_limits<int>::max()) {
+      return make_error(join(path, "members") + ": " + std::to_string(**members) +
+                        " is beyond " + std::to_string(std::numeric_limits<int>::max()));
+    }
     object.members = static_cast<int>(**members);
   }
   return object;

@@ -41,6 +41,9 @@ TEST(TruthFrameParser, RejectsInvalidObjects) {
        "not positive definite"},
       {R"({"time":1,"objects":[{"id":1,"position":[0,0],"extent":[[1,0.5],[0,1]]}]})",
        "not symmetric"},
+      // beyond int: was cast unchecked (fuzz finding, fuzz/seeds/truth_line)
+      {R"({"time":1,"objects":[{"id":1,"position":[0,0],"members":10995113138}]})",
+       "objects[0].members: 10995113138 is beyond 2147483647"},
   };
   for (const auto& c : cases) {
     const auto frame = parse_truth_frame(c.line);
@@ -86,6 +89,9 @@ TEST(TrackFrameParser, RejectsInvalidTracks) {
        "associations[0].probability: not in [0, 1]"},
       {R"({"sensor":0,"scan":0,"time":0,"tracks":[],"events":[{"track":1}]})",
        "events[0].type: missing"},
+      // beyond int: was cast unchecked (fuzz finding, fuzz/seeds/track_line)
+      {R"({"sensor":0,"scan":0,"time":0,"tracks":[{"id":1,"status":"confirmed","position":[0,0],"members":10995113138}]})",
+       "tracks[0].members: 10995113138 is beyond 2147483647"},
   };
   for (const auto& c : cases) {
     const auto frame = parse_track_frame(c.line);
