@@ -303,7 +303,8 @@ void Daemon::Impl::track_one(QueuedScan& item) {
     }
   }
   const double latency = std::chrono::duration<double>(Clock::now() - item.received).count();
-  status.scan_processed(scan.plots.size(), latency, result.frame);
+  status.scan_processed(scan.plots.size(), latency, result.frame,
+                        static_cast<std::uint64_t>(result.report.numeric_failures));
   spdlog::debug("sensor {} scan {} t={:.3f}: {} plots, {} tracks, {} initiated, {:.3f} ms",
                 scan.sensor, scan.scan, scan.time, scan.plots.size(), result.frame.tracks.size(),
                 result.report.initiated, latency * 1e3);

@@ -39,7 +39,8 @@ std::uint64_t StatusCollector::scan_dropped() {
   return ++report_.scans_dropped;
 }
 
-void StatusCollector::scan_processed(std::uint64_t plots, double latency, const TrackFrame& frame) {
+void StatusCollector::scan_processed(std::uint64_t plots, double latency, const TrackFrame& frame,
+                                     std::uint64_t numeric_failures) {
   std::uint32_t tentative = 0, confirmed = 0, coasting = 0;
   for (const TrackReport& t : frame.tracks) {
     tentative += t.status == TrackStatus::kTentative;
@@ -53,6 +54,7 @@ void StatusCollector::scan_processed(std::uint64_t plots, double latency, const 
   report_.tracks_tentative = tentative;
   report_.tracks_confirmed = confirmed;
   report_.tracks_coasting = coasting;
+  report_.numeric_failures += numeric_failures;
 }
 
 TrackerStatusReport StatusCollector::snapshot(std::uint32_t queue_depth) const {

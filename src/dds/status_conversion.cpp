@@ -82,6 +82,7 @@ Expected<TrackerStatusSample> to_dds(const TrackerStatusReport& status) {
   s.tracks_tentative = status.tracks_tentative;
   s.tracks_confirmed = status.tracks_confirmed;
   s.tracks_coasting = status.tracks_coasting;
+  s.numeric_failures = status.numeric_failures;
   return out;
 }
 
@@ -107,6 +108,7 @@ Expected<TrackerStatusReport> from_dds(const skytrack_dds_TrackerStatus& status)
   out.tracks_tentative = status.tracks_tentative;
   out.tracks_confirmed = status.tracks_confirmed;
   out.tracks_coasting = status.tracks_coasting;
+  out.numeric_failures = status.numeric_failures;
   return out;
 }
 

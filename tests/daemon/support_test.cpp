@@ -36,12 +36,14 @@ TEST(StatusCollector, CountsRejectionsByReasonAndTracksByStatus) {
   frame.tracks[1].status = TrackStatus::kConfirmed;
   frame.tracks[2].status = TrackStatus::kCoasting;
   frame.tracks[3].status = TrackStatus::kTentative;
-  status.scan_processed(12, 0.002, frame);
+  status.scan_processed(12, 0.002, frame, 3);
+  status.scan_processed(0, 0.001, frame, 2);
   const TrackerStatusReport r = status.snapshot(5);
   EXPECT_EQ(r.instance, "unit");
   EXPECT_EQ(r.profile_version, "3");
-  EXPECT_EQ(r.scans_processed, 1u);
+  EXPECT_EQ(r.scans_processed, 2u);
   EXPECT_EQ(r.plots_processed, 12u);
+  EXPECT_EQ(r.numeric_failures, 5u);
   EXPECT_EQ(r.scans_dropped, 1u);
   EXPECT_EQ(r.queue_depth, 5u);
   EXPECT_EQ(r.scans_rejected,

@@ -402,7 +402,8 @@ TrackerStatusReport status_report() {
           .latency_max = 0.150,
           .tracks_tentative = 7,
           .tracks_confirmed = 31,
-          .tracks_coasting = 4};
+          .tracks_coasting = 4,
+          .numeric_failures = 9};
 }
 
 TEST(TrackerStatusConversion, RoundTrips) {

@@ -178,6 +178,7 @@ inline Writer encode(const skytrack_dds_TrackerStatus& s, bool big_endian) {
   w.u32(s.tracks_tentative);
   w.u32(s.tracks_confirmed);
   w.u32(s.tracks_coasting);
+  w.u64(s.numeric_failures);
   w.close(d);
   return w;
 }

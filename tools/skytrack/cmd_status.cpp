@@ -52,11 +52,12 @@ std::string status_to_json(const TrackerStatusReport& s) {
       "\"scans_processed\": {}, \"plots_processed\": {}, \"plots_rejected\": {}, "
       "\"scans_rejected\": {}, \"scans_dropped\": {}, \"queue_depth\": {}, "
       "\"latency\": {{\"p50\": {:.6g}, \"p99\": {:.6g}, \"max\": {:.6g}}}, "
-      "\"tracks\": {{\"tentative\": {}, \"confirmed\": {}, \"coasting\": {}}}}}",
+      "\"tracks\": {{\"tentative\": {}, \"confirmed\": {}, \"coasting\": {}}}, "
+      "\"numeric_failures\": {}}}",
       json_string(s.instance), json_string(s.profile_name), json_string(s.profile_version),
       s.uptime, s.scans_processed, s.plots_processed, json_counts(s.plots_rejected),
       json_counts(s.scans_rejected), s.scans_dropped, s.queue_depth, s.latency_p50, s.latency_p99,
-      s.latency_max, s.tracks_tentative, s.tracks_confirmed, s.tracks_coasting);
+      s.latency_max, s.tracks_tentative, s.tracks_confirmed, s.tracks_coasting, s.numeric_failures);
 }
 
 int run_status(const StatusOptions& options) {

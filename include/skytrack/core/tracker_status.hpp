@@ -32,6 +32,7 @@ struct TrackerStatusReport {
   std::uint32_t tracks_tentative = 0;
   std::uint32_t tracks_confirmed = 0;
   std::uint32_t tracks_coasting = 0;
+  std::uint64_t numeric_failures = 0;  // ScanReport::numeric_failures, summed
 
   bool operator==(const TrackerStatusReport&) const = default;
 };

@@ -25,8 +25,9 @@ class StatusCollector {
   /// Returns the number of drops so far (for rate-limited logging).
   std::uint64_t scan_dropped();
   /// A scan went through the tracker: `plots` in it, `latency` [s] from reception to
-  /// publication, and the track picture it left.
-  void scan_processed(std::uint64_t plots, double latency, const TrackFrame& frame);
+  /// publication, the track picture it left and its numeric failures.
+  void scan_processed(std::uint64_t plots, double latency, const TrackFrame& frame,
+                      std::uint64_t numeric_failures = 0);
 
   TrackerStatusReport snapshot(std::uint32_t queue_depth) const;
 
