@@ -275,6 +275,7 @@ InitiationSpec read_initiation(YamlSection s) {
   s.number("min_speed", in.min_speed, Range{0.0, kMaxSpeed});
   s.number("max_speed", in.max_speed, Range{0.1, kMaxSpeed});
   s.number("gated_seed_beta", in.gated_seed_beta, Range::probability());
+  s.integer("max_tentative", in.max_tentative, Range{1.0, 1e6});
   check_order(s, "m", in.m, "n", in.n, false);
   check_order(s, "min_speed", in.min_speed, "max_speed", in.max_speed, true);
   s.finish();

@@ -128,6 +128,7 @@ struct Daemon::Impl {
   RateLimiter bad_sample_log;  // reception thread
   RateLimiter bad_scan_log;    // tracking thread
   RateLimiter write_log;
+  RateLimiter capacity_log;  // tracking thread
   RateLimiter asterix_log;  // UDP input thread
 };
 
@@ -300,6 +301,15 @@ void Daemon::Impl::track_one(QueuedScan& item) {
       spdlog::error("sensor {} scan {}: TrackBatch not published: {} ({} since last message)",
                     scan.sensor, scan.scan,
                     sample ? std::string(dds_strretcode(rc)) : sample.error().message, *count);
+    }
+  }
+  if (result.report.initiations_refused > 0) {
+    if (const auto count = capacity_log.allow()) {
+      spdlog::warn(
+          "sensor {} scan {}: {} chains started no track: initiation.max_tentative ({}) "
+          "tentative tracks held ({} batches with refusals since last message)",
+          scan.sensor, scan.scan, result.report.initiations_refused,
+          pipeline.profile().initiation.max_tentative, *count);
     }
   }
   const double latency = std::chrono::duration<double>(Clock::now() - item.received).count();

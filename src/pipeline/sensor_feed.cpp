@@ -24,6 +24,7 @@ void add_look(ScanReport& total, const ScanReport& look) {
   total.confirmed = look.confirmed;
   total.coasting = look.coasting;
   total.initiated += look.initiated;
+  total.initiations_refused += look.initiations_refused;
   total.deleted += look.deleted;
   total.clusters += look.clusters;
   total.largest_cluster = std::max(total.largest_cluster, look.largest_cluster);

@@ -830,12 +830,21 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     find_lost_fathers(scan);
     continue_lost_fathers(report, frame);
   }
+  int tentative = static_cast<int>(std::count_if(tracks_.begin(), tracks_.end(), [](const auto& t) {
+    return t.branch == BranchType::kFather && t.life.status == TrackStatus::kTentative;
+  }));
+  int refused = 0;
   for (const Initiation& initiation :
        initiator_.step(batches_, scan.time, sensor_, look_sweep_, unused, covered)) {
     if (branching()) {
       const int father = lost_father_of(initiation.plots.back());
       if (father >= 0 && start_chain_branch(father, initiation, report, frame)) continue;
     }
+    if (tentative >= profile_.initiation.max_tentative) {
+      ++refused;
+      continue;
+    }
+    ++tentative;
     PointTrack track;
     track.id = next_provisional_++;
     track.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
@@ -857,6 +866,13 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     add_association(frame, track.id, last.plot_id, last.scan, 1.0);
     tracks_.push_back(std::move(track));
     ++report.initiated;
+  }
+  if (refused > 0) {
+    report.initiations_refused += refused;
+    add_event(frame, "overload", 0,
+              std::to_string(refused) + " chains start no track: " +
+                  std::to_string(profile_.initiation.max_tentative) +
+                  " tentative tracks held (initiation.max_tentative)");
   }
 }
 

@@ -64,7 +64,7 @@ TEST(CraftedSamples, DaemonAndRecordRefuseThemAndKeepTrackingTheValidOnes) {
   std::filesystem::create_directories(dir);
   const auto path = [&](const std::string& name) { return (dir / name).string(); };
   daemon::DdsSettings dds;
-  dds.domain = 111 + static_cast<int>(getpid() % 9);  // apart from the other tests' domains
+  dds.domain = 111 + static_cast<int>(getpid() % 8);  // apart from the other tests' domains
   std::ofstream(path("skytrackd.yaml"))
       << "skytrackd: {instance: crafted, status_period: 0.2}\n"
       << "dds: {domain: " << dds.domain << ", qos: {status: {deadline: 1.0}}}\n";

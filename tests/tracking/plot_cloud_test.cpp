@@ -89,5 +89,56 @@ TEST(PlotCloud, StartsNoTrackAndLeavesTheTracksElsewhereAsTheyWere) {
   EXPECT_GE(confirmed, 8);  // the comparison is of a real track
 }
 
+/// The aircraft of `scan` with `n` random plots spread over a 200 km disc (a jammer's or a
+/// broken extractor's: no cloud anywhere, every plot a possible seed), from scan 4 to 9.
+PlotScan spread_scan(int k, int n, std::mt19937_64& target_rng, std::mt19937_64& spread_rng) {
+  PlotScan s = scan(k, false, target_rng);
+  if (k < 4 || k > 9) return s;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int i = 1; i <= n; ++i) {
+    Plot p;
+    p.id = i;
+    p.range = 200e3 * std::sqrt(unit(spread_rng));
+    p.azimuth = 2.0 * 3.141592653589793 * unit(spread_rng);
+    s.plots.push_back(p);
+  }
+  return s;
+}
+
+TEST(PlotCloud, RandomPlotsFillTheTentativeCapacityAndNoMore) {
+  // GIVEN a tentative capacity of 300, and 20 000 random plots a scan for six scans (at this
+  // density chains of them complete by the thousand)
+  config::TrackingProfile profile;
+  profile.identity = {"capacity-test", "1", ""};
+  profile.initiation.max_tentative = 300;
+  auto pipeline = Pipeline::create(profile);
+  ASSERT_TRUE(pipeline);
+  std::mt19937_64 target_rng(7), spread_rng(13);
+  int refused = 0, most_tentative = 0, confirmed_aircraft = 0;
+  bool overload_event = false;
+  for (int k = 0; k < 14; ++k) {
+    const ScanResult& result = pipeline->process(spread_scan(k, 20000, target_rng, spread_rng));
+    ASSERT_TRUE(result.accepted) << result.rejection;
+    refused += result.report.initiations_refused;
+    most_tentative = std::max(most_tentative, result.report.tentative);
+    for (const TrackEvent& e : result.frame.events) overload_event |= e.type == "overload";
+    for (const TrackReport& t : result.frame.tracks) {
+      // the aircraft, outbound on azimuth 2.0 rad
+      const double azimuth = std::atan2(t.position.x(), t.position.y());
+      if (t.status == TrackStatus::kConfirmed && std::abs(azimuth - 2.0) < 0.02) {
+        ++confirmed_aircraft;
+      }
+    }
+  }
+  // THEN the tracker holds at most 300 tentative tracks, the chains beyond are counted and
+  // reported as an overload (without the capacity: thousands of tentative tracks, each
+  // gating the next 20 000 plots)
+  EXPECT_LE(most_tentative, 300);
+  EXPECT_GT(refused, 1000);
+  EXPECT_TRUE(overload_event);
+  // AND the aircraft, confirmed before the flood, stays confirmed through it
+  EXPECT_GE(confirmed_aircraft, 10);
+}
+
 }  // namespace
 }  // namespace skytrack

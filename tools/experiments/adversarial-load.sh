@@ -11,7 +11,7 @@
 # Usage: tools/experiments/adversarial-load.sh [skytrack-adversary options...]
 #   (skytrack-adversary --help lists them; the defaults run about two minutes)
 # Environment:
-#   ADVERSARY_DOMAIN     private DDS domain (default 232); never 0
+#   ADVERSARY_DOMAIN     private DDS domain (default 119); never 0
 #   ADVERSARY_MAX_PLOTS  the daemon's max_plots_per_scan (default: config/skytrackd.yaml's)
 #   ADVERSARY_PROFILE    the daemon's profile (default: config/profiles/default.yaml)
 # Loopback only: CYCLONEDDS_URI is set to config/dds/loopback.xml for both processes.
@@ -22,7 +22,7 @@ skytrackd=${SKYTRACK_BIN_DIR:+$SKYTRACK_BIN_DIR/skytrackd}
 skytrackd=${skytrackd:-$build/tools/skytrackd/skytrackd}
 adversary=${SKYTRACK_BIN_DIR:+$SKYTRACK_BIN_DIR/skytrack-adversary}
 adversary=${adversary:-$build/tools/experiments/adversary/skytrack-adversary}
-domain=${ADVERSARY_DOMAIN:-232}
+domain=${ADVERSARY_DOMAIN:-119}
 profile=${ADVERSARY_PROFILE:-$root/config/profiles/default.yaml}
 export CYCLONEDDS_URI="file://$root/config/dds/loopback.xml"
 

@@ -79,7 +79,7 @@ int run_track(const TrackOptions& options) {
   }
   ProgressBar progress(!options.quiet);
   std::vector<double> latency_ms;
-  std::size_t rejected_scans = 0, initiated = 0, max_tracks = 0;
+  std::size_t rejected_scans = 0, initiated = 0, refused = 0, max_tracks = 0;
   const auto start = std::chrono::steady_clock::now();
   while (auto scan = reader->next()) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -102,6 +102,7 @@ int run_track(const TrackOptions& options) {
                  scan->scan, scan->time, change);
     }
     initiated += static_cast<std::size_t>(result.report.initiated);
+    refused += static_cast<std::size_t>(result.report.initiations_refused);
     max_tracks = std::max(max_tracks, result.frame.tracks.size());
     if (!writer->write(result.frame)) {
       fmt::print(stderr, "skytrack track: writing {} failed\n", options.out);
@@ -125,12 +126,12 @@ int run_track(const TrackOptions& options) {
       stderr,
       "skytrack track: profile '{}': {} batches ({} skipped), {} plots ({} invalid, {} "
       "rejected as clutter), {} lines rejected, {} numeric failures\n"
-      "  tracks initiated {}, most at once {}\n"
+      "  tracks initiated {}, most at once {}; initiations refused (max_tentative) {}\n"
       "  per batch: mean {:.3f} ms, p50 {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms; wall {:.2f} s; "
       "peak RSS {:.1f} MiB\n",
       profile.identity.name, c.scans_processed, c.scans_rejected, c.plots_processed,
       c.plots_invalid, c.plots_rejected_clutter, reader->counts().rejected_lines,
-      c.numeric_failures, initiated, max_tracks, mean(latency_ms), percentile(latency_ms, 0.5),
+      c.numeric_failures, initiated, max_tracks, refused, mean(latency_ms), percentile(latency_ms, 0.5),
       percentile(latency_ms, 0.99),
       latency_ms.empty() ? 0.0 : *std::max_element(latency_ms.begin(), latency_ms.end()), wall,
       peak_rss_mib());

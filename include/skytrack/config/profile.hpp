@@ -138,6 +138,10 @@ struct InitiationSpec {
   // formation member inside its neighbour's gate. A track without such a plot holds its
   // whole gate. 1: only plots in no gate seed chains.
   double gated_seed_beta = 0.7;
+  // The track capacity for tentative tracks: a chain completed while this many are held
+  // starts none (counted, reported as an overload event), so a batch of random plots (a
+  // jammer, a broken extractor) cannot grow the tracker without bound.
+  int max_tentative = 5000;
   bool operator==(const InitiationSpec&) const = default;
 };
 

@@ -55,6 +55,7 @@ struct ScanReport {
   int plots_in_clouds = 0;         // left out of initiation: too many plots round them
   int tentative = 0, confirmed = 0, coasting = 0;
   int initiated = 0, deleted = 0;
+  int initiations_refused = 0;  // chains that started no track: initiation.max_tentative held
   int clusters = 0, largest_cluster = 0, approximated_clusters = 0;
   // Track updates in which a mode kept its prediction (an innovation covariance that would
   // not factorise), and clusters whose association failed (JpdaStatus other than ok).
