@@ -38,6 +38,11 @@ constexpr double kAssociationReportThreshold = 1e-3;
 // (wide gates, chained in dense clutter) get a cheaper exact attempt and fewer joint events.
 constexpr int kManoeuvreKBest = 10;
 constexpr std::int64_t kManoeuvreExactStates = std::int64_t{1} << 12;
+// Murty's k-best costs about k x tracks^2 x (tracks + plots): seconds for the clusters of
+// hundreds of tracks a flood of random plots chains together, where k joint events are a
+// vanishing share of the whole anyway. Clusters of more than this many times the exact limit
+// take per-track PDA, the bound on a batch's association work.
+constexpr int kKBestClusterFactor = 2;
 // A plot cloud: more than this many other plots within this many of a plot's position
 // sigmas in one look (a formation of a few aircraft is not one).
 constexpr int kCloudPlots = 16;
@@ -577,9 +582,9 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
       }
     }
     const bool gnn = profile_.association.method == config::AssociationMethod::kGnn;
-    const bool pda =
-        pda_above_exact && !gnn &&
-        n_tracks > static_cast<Eigen::Index>(profile_.association.max_exact_cluster_size);
+    const auto exact = static_cast<Eigen::Index>(profile_.association.max_exact_cluster_size);
+    const bool too_large = n_tracks > kKBestClusterFactor * exact;
+    const bool pda = !gnn && n_tracks > exact && (pda_above_exact || too_large);
     const JpdaResult& result =
         pda ? pda_marginals(problem)
             : (gnn ? gnn_.associate(problem)
@@ -588,8 +593,9 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
     if (pda) {
       ++report.approximated_clusters;
       add_event(frame, "jpda_approximated", 0,
-                std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) +
-                    " plots, manoeuvre gates: PDA per track");
+                std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +
+                    (pda_above_exact ? "manoeuvre gates" : "too many for k-best") +
+                    ": PDA per track");
     } else if (result.approximated) {
       ++report.approximated_clusters;
       add_event(frame, "jpda_approximated", 0,

@@ -111,17 +111,21 @@ TEST(PlotCloud, RandomPlotsFillTheTentativeCapacityAndNoMore) {
   config::TrackingProfile profile;
   profile.identity = {"capacity-test", "1", ""};
   profile.initiation.max_tentative = 300;
+  profile.association.max_exact_cluster_size = 4;  // k-best up to 8 tracks, PDA above
   auto pipeline = Pipeline::create(profile);
   ASSERT_TRUE(pipeline);
   std::mt19937_64 target_rng(7), spread_rng(13);
   int refused = 0, most_tentative = 0, confirmed_aircraft = 0;
-  bool overload_event = false;
+  bool overload_event = false, per_track_pda = false;
   for (int k = 0; k < 14; ++k) {
     const ScanResult& result = pipeline->process(spread_scan(k, 20000, target_rng, spread_rng));
     ASSERT_TRUE(result.accepted) << result.rejection;
     refused += result.report.initiations_refused;
     most_tentative = std::max(most_tentative, result.report.tentative);
-    for (const TrackEvent& e : result.frame.events) overload_event |= e.type == "overload";
+    for (const TrackEvent& e : result.frame.events) {
+      overload_event |= e.type == "overload";
+      per_track_pda |= e.detail.find("too many for k-best") != std::string::npos;
+    }
     for (const TrackReport& t : result.frame.tracks) {
       // the aircraft, outbound on azimuth 2.0 rad
       const double azimuth = std::atan2(t.position.x(), t.position.y());
@@ -136,6 +140,10 @@ TEST(PlotCloud, RandomPlotsFillTheTentativeCapacityAndNoMore) {
   EXPECT_LE(most_tentative, 300);
   EXPECT_GT(refused, 1000);
   EXPECT_TRUE(overload_event);
+  // ... and the clusters their gates chain together, too large for Murty's k-best (more than
+  // twice the exact limit: with the default, hundreds of tracks took seconds each), take
+  // per-track PDA
+  EXPECT_TRUE(per_track_pda);
   // AND the aircraft, confirmed before the flood, stays confirmed through it
   EXPECT_GE(confirmed_aircraft, 10);
 }
