@@ -506,7 +506,7 @@ void PointTracker::reject_clutter(ScanReport& report, TrackFrame& frame) {
   std::erase_if(candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
   std::erase_if(manoeuvre_candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
   report.plots_rejected_clutter = result.rejected;
-  add_event(frame, "clutter_rejected", 0,
+  add_event(frame, TrackEventType::kClutterRejected, 0,
             std::to_string(result.rejected) + " of " + std::to_string(plots_.size()) + " plots");
 }
 
@@ -592,13 +592,13 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
     numeric_failures_ += result.status != JpdaStatus::kOk;
     if (pda) {
       ++report.approximated_clusters;
-      add_event(frame, "jpda_approximated", 0,
+      add_event(frame, TrackEventType::kJpdaApproximated, 0,
                 std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +
                     (pda_above_exact ? "manoeuvre gates" : "too many for k-best") +
                     ": PDA per track");
     } else if (result.approximated) {
       ++report.approximated_clusters;
-      add_event(frame, "jpda_approximated", 0,
+      add_event(frame, TrackEventType::kJpdaApproximated, 0,
                 std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +
                     std::to_string(profile_.association.k_best) + " best joint events");
     }
@@ -645,11 +645,11 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   const LifeChange change = advance_life(
       track.life, detected, mode_spread(track.estimate, kLifeSpreadDims), profile_.track_life);
   if (change.confirmed) {
-    add_event(frame, "confirmed", track.id, "");
+    add_event(frame, TrackEventType::kConfirmed, track.id, "");
     if (branching()) confirmed_now_.push_back(t);
   }
-  if (change.started_coasting) add_event(frame, "coasting", track.id, "");
-  if (change.deleted) add_event(frame, "deleted", track.id, "");
+  if (change.started_coasting) add_event(frame, TrackEventType::kCoasting, track.id, "");
+  if (change.deleted) add_event(frame, TrackEventType::kDeleted, track.id, "");
 }
 
 PointTracker::PlotRatios PointTracker::soft_update(int t, std::vector<Candidate>& pool,
@@ -826,7 +826,7 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
   }
   if (clouded > 0) {
     report.plots_in_clouds += clouded;
-    add_event(frame, "plot_cloud", 0,
+    add_event(frame, TrackEventType::kPlotCloud, 0,
               std::to_string(clouded) + " plots in clouds start no track (more than " +
                   std::to_string(kCloudPlots) + " plots within " +
                   std::to_string(static_cast<int>(kCloudSigmas)) + " position sigmas)");
@@ -867,7 +867,7 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     for (const PlotMeasurement& p : initiation.plots) {
       detail.append(" ").append(std::to_string(p.plot_id));
     }
-    add_event(frame, "initiated", track.id, detail);
+    add_event(frame, TrackEventType::kInitiated, track.id, detail);
     const PlotMeasurement& last = initiation.plots.back();
     add_association(frame, track.id, last.plot_id, last.scan, 1.0);
     tracks_.push_back(std::move(track));
@@ -875,9 +875,9 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
   }
   if (refused > 0) {
     report.initiations_refused += refused;
-    add_event(frame, "overload", 0,
-              std::to_string(refused) + " chains start no track: " +
-                  std::to_string(profile_.initiation.max_tentative) +
+    add_event(frame, TrackEventType::kOverload, 0,
+              std::to_string(refused) +
+                  " chains start no track: " + std::to_string(profile_.initiation.max_tentative) +
                   " tentative tracks held (initiation.max_tentative)");
   }
 }

@@ -149,7 +149,7 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   branch_pairs_.clear();
   touched_.assign(tracks_.size(), 0);
   for (const int t : suspended_at_gate_) {
-    add_event(frame, "suspended", tracks_[t].id,
+    add_event(frame, TrackEventType::kSuspended, tracks_[t].id,
               "predicted position spread above delete_position_sigma; kept unreported while a "
               "branch may replace it");
   }
@@ -362,7 +362,7 @@ void PointTracker::split_undecided_fathers(TrackFrame& frame) {
       track.last_detected = p.last_detected;
       hold_last_motion(track);
     }
-    add_event(frame, "undecided", track.id,
+    add_event(frame, TrackEventType::kUndecided, track.id,
               "two plots above ambiguity_beta: the sons from its plots decide");
     for (std::size_t k = 0; k < p.plots.size(); ++k) {
       if (free(k)) {
@@ -383,11 +383,12 @@ void PointTracker::update_father(int t, std::span<const int> candidates,
   father.life.status = TrackStatus::kCoasting;
   if (!father.doomed) {
     father.doomed = batches_;
-    add_event(frame, "suspended", father.id,
+    add_event(frame, TrackEventType::kSuspended, father.id,
               "deleted by its track life; kept unreported while a branch may replace it");
   }
-  std::erase_if(frame.events,
-                [&](const TrackEvent& e) { return e.type == "deleted" && e.track == father.id; });
+  std::erase_if(frame.events, [&](const TrackEvent& e) {
+    return e.type == TrackEventType::kDeleted && e.track == father.id;
+  });
 }
 
 void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
@@ -501,7 +502,7 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
     son.quality = quality;
     son.score = score;
     tree_.add_branch(son.id, father_id, true);
-    add_event(frame, "branch_created", father_id,
+    add_event(frame, TrackEventType::kBranchCreated, father_id,
               name(BranchType::kSon, son.id) + " of " + name(BranchType::kFather, father_id) +
                   ": its last motion before plot " + plot + " (coast son, doubt " +
                   std::to_string(d.doubt).substr(0, 4) + ")");
@@ -604,7 +605,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
                      profile_.association.gate_probability, profile_.track_life);
     const LifeChange change = advance_life(
         branch.life, true, mode_spread(branch.estimate, kLifeSpreadDims), profile_.track_life);
-    if (change.confirmed) add_event(frame, "confirmed", number, "");
+    if (change.confirmed) add_event(frame, TrackEventType::kConfirmed, number, "");
     return;
   }
   if (non_manoeuvre) {  // rule 8
@@ -699,7 +700,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   tree_.add_branch(branch.id, parent_id);
   used_by_branch_[pair.plot] = 1;
   add_association(frame, branch.id, plot.plot_id, plot.scan, pair.probability);
-  add_event(frame, "branch_created", father,
+  add_event(frame, TrackEventType::kBranchCreated, father,
             name(branch.branch, branch.id) + " of " + name(parent_type, parent_id) + " from plot " +
                 std::to_string(plot.plot_id));
   ++report.branches_created;
@@ -753,7 +754,7 @@ bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double sc
     }
     if (least < 0 || tracks_[least].score >= score) {
       add_event(
-          frame, "branch_pruned", father,
+          frame, TrackEventType::kBranchPruned, father,
           "branch from plot " + std::to_string(plot_id) + " not created: least likely at " + where);
       ++report.branches_pruned;
       return false;
@@ -821,7 +822,7 @@ void PointTracker::retire_doomed_fathers(TrackFrame& frame) {
       continue;
     }
     father.life.status = TrackStatus::kDeleted;
-    add_event(frame, "deleted", father.id, "no branch left to replace it");
+    add_event(frame, TrackEventType::kDeleted, father.id, "no branch left to replace it");
     changes_.clear();
     tree_.remove(father.id, changes_);
   }
@@ -946,8 +947,9 @@ void PointTracker::continue_lost_fathers(ScanReport& report, TrackFrame& frame) 
     tracks_[t].life.support += tracks_[f].life.support;
     changes_.clear();
     tree_.promote(number, changes_, false);
-    std::erase_if(frame.events,
-                  [&](const TrackEvent& e) { return e.type == "confirmed" && e.track == number; });
+    std::erase_if(frame.events, [&](const TrackEvent& e) {
+      return e.type == TrackEventType::kConfirmed && e.track == number;
+    });
     apply(changes_, why + " (§3.3)", report, frame);
   }
   confirmed_now_.clear();
@@ -981,7 +983,7 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
   for (const PlotMeasurement& p : initiation.plots) {
     detail.append(" ").append(std::to_string(p.plot_id));
   }
-  add_event(frame, "branch_created", father_id,
+  add_event(frame, TrackEventType::kBranchCreated, father_id,
             detail.append(" (a plot chain in its manoeuvre gate)"));
   add_association(frame, branch.id, plot.plot_id, plot.scan, 1.0);
   ++report.branches_created;
@@ -1003,13 +1005,14 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
     switch (change.kind) {
       case BranchChange::Kind::kPruned:
         track.life.status = TrackStatus::kDeleted;
-        add_event(frame, "branch_pruned", change.father, who + ": " + reason);
+        add_event(frame, TrackEventType::kBranchPruned, change.father, who + ": " + reason);
         ++report.branches_pruned;
         break;
       case BranchChange::Kind::kIndependent:
         // A new father: numbered once confirmed (number_confirmed).
         track.branch = BranchType::kFather;
-        add_event(frame, "initiated", change.track, "independent " + who + ": " + reason);
+        add_event(frame, TrackEventType::kInitiated, change.track,
+                  "independent " + who + ": " + reason);
         ++report.initiated;
         break;
       case BranchChange::Kind::kPromoted: {
@@ -1019,7 +1022,7 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
           // A father its life deleted in this batch lives on in the branch: no "deleted".
           if (old.life.status == TrackStatus::kDeleted) {
             std::erase_if(frame.events, [&](const TrackEvent& e) {
-              return e.type == "deleted" && e.track == change.father;
+              return e.type == TrackEventType::kDeleted && e.track == change.father;
             });
           }
           old.replaced = true;
@@ -1032,7 +1035,7 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
         replaced_now_.push_back(change.father);
         slots_.erase(change.track);
         slots_[change.father] = i;
-        add_event(frame, "branch_promoted", change.father,
+        add_event(frame, TrackEventType::kBranchPromoted, change.father,
                   who + " replaces " + name(BranchType::kFather, change.father) + ": " + reason);
         ++report.branches_promoted;
         break;

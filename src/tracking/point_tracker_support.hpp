@@ -76,8 +76,9 @@ inline int looks_between(double sweep_a, double sweep_b) {
   return static_cast<int>(std::lround(std::abs(sweep_b - sweep_a) / (2.0 * 3.141592653589793)));
 }
 
-inline void add_event(TrackFrame& frame, const char* type, std::int64_t track, std::string detail) {
-  frame.events.push_back({type, track, std::move(detail)});
+inline void add_event(TrackFrame& frame, TrackEventType type, std::int64_t track,
+                      std::string detail) {
+  frame.events.push_back({type, track, std::move(detail), {}});
 }
 
 }  // namespace skytrack::tracking_detail
