@@ -234,7 +234,7 @@ Expected<TrackBatchSample> to_dds(const TrackFrame& frame) {
     return unexpected(out_of_memory("TrackBatch.events"));
   for (std::size_t i = 0; i < frame.events.size(); ++i) {
     const TrackEvent& e = frame.events[i];
-    auto type = dup_string(e.type, field("TrackFrame.events", i, "type"));
+    auto type = dup_string(type_name(e), field("TrackFrame.events", i, "type"));
     if (!type) return unexpected(type.error());
     b.events._buffer[i].type = *type;
     b.events._buffer[i].track = e.track;
@@ -283,7 +283,8 @@ Expected<TrackFrame> from_dds(const skytrack_dds_TrackBatch& batch) {
   frame.events.reserve(batch.events._length);
   for (std::uint32_t i = 0; i < batch.events._length; ++i) {
     const skytrack_dds_TrackEvent& e = batch.events._buffer[i];
-    frame.events.push_back({from_c_string(e.type), e.track, from_c_string(e.detail)});
+    frame.events.push_back(
+        event_from_name(from_c_string(e.type), e.track, from_c_string(e.detail)));
   }
   return frame;
 }

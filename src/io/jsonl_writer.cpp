@@ -288,7 +288,7 @@ std::string to_json(const TrackFrame& frame) {
   put_list(out, "associations", frame.associations, put_association, first);
   const auto put_event = [](Buffer& b, const TrackEvent& e) {
     fmt::format_to(std::back_inserter(b), "{{\"type\":");
-    put_string(b, e.type);
+    put_string(b, type_name(e));
     fmt::format_to(std::back_inserter(b), ",\"track\":{},\"detail\":", e.track);
     put_string(b, e.detail);
     b.push_back('}');

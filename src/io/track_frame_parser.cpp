@@ -137,7 +137,7 @@ Expected<TrackEvent> parse_event(const element& value, const std::string& path) 
   if (!track) return unexpected(track.error());
   auto detail = optional_field<std::string_view>(*obj, path, "detail", as_string);
   if (!detail) return unexpected(detail.error());
-  return TrackEvent{std::string(*type), track->value_or(0), std::string(detail->value_or(""))};
+  return event_from_name(*type, track->value_or(0), std::string(detail->value_or("")));
 }
 
 /// Parses the optional array `key` of `obj` with `parse` into `out`.

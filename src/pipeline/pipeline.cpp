@@ -110,12 +110,12 @@ Expected<Pipeline> Pipeline::create(const config::TrackingProfile& profile) {
   return Pipeline(profile);
 }
 
-bool Pipeline::place_on_timeline(const PlotScan& scan, bool restarted) {
+bool Pipeline::place_on_timeline(const PlotScan& scan, bool restarted, SensorFeed& feed) {
   using enum SensorTimeline::Placement;
   const auto placement =
       timeline_.place(scan.sensor, scan.time, restarted, profile_.input_limits.max_time_jump);
   if (placement == kHeld) return false;
-  if (placement == kRejoins) sensors_.at(scan.sensor).feed = SensorFeed(profile_.antenna);
+  if (placement == kRejoins) feed = SensorFeed(profile_.antenna);
   if (placement == kNewTimeline) {
     // No track's time compares with this sensor's batches.
     result_.tracks_restarted = true;
@@ -140,7 +140,15 @@ const PlotScan& Pipeline::without_invalid_plots(const PlotScan& scan) {
   return clean_;
 }
 
-const ScanResult& Pipeline::process(const PlotScan& scan) {
+// noexcept: the daemon's per-batch call. Everything it calls reports bad input and numeric
+// trouble as values (rejections, NumericStatus, counters); what could throw has been
+// checked: the tracker's ClutterRejector checks its spec when built, and create() built one
+// from the same profile; BranchTree's map::at only looks up nodes its invariants keep;
+// nanoflann throws only for queries on an unbuilt index, and PlotIndex and ClutterRejector
+// build theirs first (empty ones too). What remains is std::bad_alloc from the strings,
+// vectors and maps of a batch: it terminates, by design, as a daemon out of memory cannot
+// go on with its tracks half updated.
+const ScanResult& Pipeline::process(const PlotScan& scan) noexcept {
   result_.accepted = false;
   result_.refused = false;
   result_.rejection.clear();
@@ -176,7 +184,7 @@ const ScanResult& Pipeline::process(const PlotScan& scan) {
     ++counters_.clock_restarts;
     result_.clock_restarted = true;
   }
-  if (!place_on_timeline(scan, verdict.restarted)) {
+  if (!place_on_timeline(scan, verdict.restarted, sensor.feed)) {
     reject(batch_reason::kClockDisagrees);
     result_.rejection += " (t = " + std::to_string(scan.time) + " s; the tracks' time: " +
                          std::to_string(*timeline_.time()) + " s)";

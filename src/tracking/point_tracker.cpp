@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <utility>
@@ -186,6 +187,7 @@ void PointTracker::start_frame(const PlotScan& scan, TrackFrame& frame) const {
 void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& report,
                            const LookSources* sources) {
   start_frame(scan, frame);
+  events_.clear();
   ++batches_;
 
   auto start = Clock::now();
@@ -199,7 +201,7 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
   report.predict = since(start);
 
   start = Clock::now();
-  reject_clutter(report, frame);
+  reject_clutter(report);
   if (branching()) {
     associate_branches(scan, report, frame);
   } else {
@@ -209,7 +211,11 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
 
   start = Clock::now();
   initiate(scan, report, frame);
-  if (branching()) retire_doomed_fathers(frame);
+  if (branching()) retire_doomed_fathers();
+  // Every event of the batch is decided: emitted, in the order they were made.
+  frame.events.insert(frame.events.end(), std::make_move_iterator(events_.begin()),
+                      std::make_move_iterator(events_.end()));
+  events_.clear();
   number_confirmed(frame);
   // The tracks this look saw (aged or updated, or started or branched in it).
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
@@ -491,7 +497,7 @@ double PointTracker::nearest_time(const Eigen::Vector3d& centre) const {
   return plots_[nearest].time;
 }
 
-void PointTracker::reject_clutter(ScanReport& report, TrackFrame& frame) {
+void PointTracker::reject_clutter(ScanReport& report) {
   if (!profile_.clutter_rejection.enabled || plots_.empty()) return;
   // Plots in the gate of a confirmed track are kept whatever their density.
   std::vector<std::uint8_t> protect(plots_.size(), 0);
@@ -506,7 +512,7 @@ void PointTracker::reject_clutter(ScanReport& report, TrackFrame& frame) {
   std::erase_if(candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
   std::erase_if(manoeuvre_candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
   report.plots_rejected_clutter = result.rejected;
-  add_event(frame, "clutter_rejected", 0,
+  add_event(events_, TrackEventType::kClutterRejected, 0,
             std::to_string(result.rejected) + " of " + std::to_string(plots_.size()) + " plots");
 }
 
@@ -514,7 +520,7 @@ void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
   estimate_clutter_density();
   kind_list_.resize(candidates_.size());
   for (std::size_t k = 0; k < candidates_.size(); ++k) kind_list_[k] = static_cast<int>(k);
-  solve_clusters(candidates_, kind_list_, profile_.association.gate_probability, report, frame,
+  solve_clusters(candidates_, kind_list_, profile_.association.gate_probability, report,
                  [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
                    update_track(t, mine, beta, miss, frame);
                  });
@@ -542,7 +548,7 @@ const JpdaResult& PointTracker::pda_marginals(const JpdaProblem& problem) {
 }
 
 void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<const int> list,
-                                  double gate_probability, ScanReport& report, TrackFrame& frame,
+                                  double gate_probability, ScanReport& report,
                                   const OnTrack& on_track, bool pda_above_exact) {
   const double pd = profile_.association.detection_probability;
   // Candidates are grouped by track (they were made track by track) and clustered.
@@ -592,13 +598,13 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
     numeric_failures_ += result.status != JpdaStatus::kOk;
     if (pda) {
       ++report.approximated_clusters;
-      add_event(frame, "jpda_approximated", 0,
+      add_event(events_, TrackEventType::kJpdaApproximated, 0,
                 std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +
                     (pda_above_exact ? "manoeuvre gates" : "too many for k-best") +
                     ": PDA per track");
     } else if (result.approximated) {
       ++report.approximated_clusters;
-      add_event(frame, "jpda_approximated", 0,
+      add_event(events_, TrackEventType::kJpdaApproximated, 0,
                 std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +
                     std::to_string(profile_.association.k_best) + " best joint events");
     }
@@ -619,7 +625,7 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
 
 void PointTracker::update_track(int t, std::span<const int> candidates,
                                 std::span<const double> beta_plots, double beta_miss,
-                                TrackFrame& frame) {
+                                TrackFrame& frame, bool reports_deletion) {
   PointTrack& track = tracks_[t];
   if (!covered_[t] && candidates.empty()) return;  // not looked at: neither updated nor aged
   const double pd = profile_.association.detection_probability;
@@ -645,11 +651,12 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   const LifeChange change = advance_life(
       track.life, detected, mode_spread(track.estimate, kLifeSpreadDims), profile_.track_life);
   if (change.confirmed) {
-    add_event(frame, "confirmed", track.id, "");
+    add_event(events_, TrackEventType::kConfirmed, track.id, "");
     if (branching()) confirmed_now_.push_back(t);
   }
-  if (change.started_coasting) add_event(frame, "coasting", track.id, "");
-  if (change.deleted) add_event(frame, "deleted", track.id, "");
+  if (change.started_coasting) add_event(events_, TrackEventType::kCoasting, track.id, "");
+  if (change.deleted && reports_deletion)
+    add_event(events_, TrackEventType::kDeleted, track.id, "");
 }
 
 PointTracker::PlotRatios PointTracker::soft_update(int t, std::vector<Candidate>& pool,
@@ -826,7 +833,7 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
   }
   if (clouded > 0) {
     report.plots_in_clouds += clouded;
-    add_event(frame, "plot_cloud", 0,
+    add_event(events_, TrackEventType::kPlotCloud, 0,
               std::to_string(clouded) + " plots in clouds start no track (more than " +
                   std::to_string(kCloudPlots) + " plots within " +
                   std::to_string(static_cast<int>(kCloudSigmas)) + " position sigmas)");
@@ -834,7 +841,7 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
   const auto covered = [&](const Eigen::Vector3d& p) { return covers(scan, p); };
   if (branching()) {
     find_lost_fathers(scan);
-    continue_lost_fathers(report, frame);
+    continue_lost_fathers(report);
   }
   int tentative = static_cast<int>(std::count_if(tracks_.begin(), tracks_.end(), [](const auto& t) {
     return t.branch == BranchType::kFather && t.life.status == TrackStatus::kTentative;
@@ -867,7 +874,7 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     for (const PlotMeasurement& p : initiation.plots) {
       detail.append(" ").append(std::to_string(p.plot_id));
     }
-    add_event(frame, "initiated", track.id, detail);
+    add_event(events_, TrackEventType::kInitiated, track.id, detail);
     const PlotMeasurement& last = initiation.plots.back();
     add_association(frame, track.id, last.plot_id, last.scan, 1.0);
     tracks_.push_back(std::move(track));
@@ -875,9 +882,9 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
   }
   if (refused > 0) {
     report.initiations_refused += refused;
-    add_event(frame, "overload", 0,
-              std::to_string(refused) + " chains start no track: " +
-                  std::to_string(profile_.initiation.max_tentative) +
+    add_event(events_, TrackEventType::kOverload, 0,
+              std::to_string(refused) +
+                  " chains start no track: " + std::to_string(profile_.initiation.max_tentative) +
                   " tentative tracks held (initiation.max_tentative)");
   }
 }

@@ -37,6 +37,7 @@ using tracking_detail::kLifeSpreadDims;
 using tracking_detail::mode_spread;
 using tracking_detail::position_of;
 using tracking_detail::position_spread;
+using tracking_detail::supersede;
 
 constexpr PairKind kConfirmationOrder[kPairKinds] = {
     PairKind::kFatherNonManoeuvre, PairKind::kSonNonManoeuvre, PairKind::kGrandsonManoeuvre,
@@ -149,7 +150,7 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   branch_pairs_.clear();
   touched_.assign(tracks_.size(), 0);
   for (const int t : suspended_at_gate_) {
-    add_event(frame, "suspended", tracks_[t].id,
+    add_event(events_, TrackEventType::kSuspended, tracks_[t].id,
               "predicted position spread above delete_position_sigma; kept unreported while a "
               "branch may replace it");
   }
@@ -160,7 +161,7 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   replaced_now_.clear();
   if (profile_.branching.coast_sons > 0) before_update_.assign(tracks_.size(), BeforeUpdate{});
   solve_kind(PairKind::kFatherNonManoeuvre, report, frame);
-  split_undecided_fathers(frame);
+  split_undecided_fathers();
   solve_kind(PairKind::kSonNonManoeuvre, report, frame);
   // Their confirmation comes first in §2.2 and does not depend on the later kinds, so it
   // tells which tracks can still use a manoeuvre pair: fathers and sons without a confirmed
@@ -201,7 +202,7 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
   const double gate_probability = manoeuvre ? profile_.branching.manoeuvre_gate_probability
                                             : profile_.association.gate_probability;
   solve_clusters(
-      pool, kind_list_, gate_probability, report, frame,
+      pool, kind_list_, gate_probability, report,
       [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
         if (tracks_[t].branch != type) return;
         const bool was_doomed = tracks_[t].doomed.has_value();
@@ -337,7 +338,7 @@ void PointTracker::claim_best_plot(int t, const std::vector<Candidate>& pool,
   owner = owner == -1 ? t : -2;  // -2: the likeliest plot of several fathers
 }
 
-void PointTracker::split_undecided_fathers(TrackFrame& frame) {
+void PointTracker::split_undecided_fathers() {
   const double tau = profile_.branching.ambiguity_beta;
   for (const PendingSplit& p : pending_splits_) {
     // A plot that is another father's likeliest is that father's target (a formation
@@ -362,7 +363,7 @@ void PointTracker::split_undecided_fathers(TrackFrame& frame) {
       track.last_detected = p.last_detected;
       hold_last_motion(track);
     }
-    add_event(frame, "undecided", track.id,
+    add_event(events_, TrackEventType::kUndecided, track.id,
               "two plots above ambiguity_beta: the sons from its plots decide");
     for (std::size_t k = 0; k < p.plots.size(); ++k) {
       if (free(k)) {
@@ -377,17 +378,16 @@ void PointTracker::update_father(int t, std::span<const int> candidates,
                                  TrackFrame& frame) {
   PointTrack& father = tracks_[t];
   const bool firm = is_reported_as_firm(father.life.status);
-  update_track(t, candidates, beta_plots, beta_miss, frame);
+  // A firm father its life deletes is suspended, not deleted: no "deleted" event.
+  update_track(t, candidates, beta_plots, beta_miss, frame, /*reports_deletion=*/!firm);
   if (!firm || father.life.status != TrackStatus::kDeleted) return;
   // Deleted by its life: it lives on, coasting, while branches may replace it.
   father.life.status = TrackStatus::kCoasting;
   if (!father.doomed) {
     father.doomed = batches_;
-    add_event(frame, "suspended", father.id,
+    add_event(events_, TrackEventType::kSuspended, father.id,
               "deleted by its track life; kept unreported while a branch may replace it");
   }
-  std::erase_if(frame.events,
-                [&](const TrackEvent& e) { return e.type == "deleted" && e.track == father.id; });
 }
 
 void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
@@ -410,7 +410,7 @@ void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
       sons_marked = true;
     }
     if (pair.kind > PairKind::kSonNonManoeuvre && !sons_promoted) {
-      promote_confirmed_sons(report, frame);
+      promote_confirmed_sons(report);
       sons_promoted = true;
     }
     // An earlier decision of this batch may have removed the track.
@@ -426,7 +426,7 @@ void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
         apply(changes_,
               name(BranchType::kFather, father.id) + " took plot " +
                   std::to_string(plots_[pair.plot].plot_id) + " (rule 5)",
-              report, frame);
+              report);
         note_doubtful_update(pair);
         break;
       }
@@ -440,7 +440,7 @@ void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
         break;
     }
   }
-  if (!sons_promoted) promote_confirmed_sons(report, frame);
+  if (!sons_promoted) promote_confirmed_sons(report);
   start_coast_sons(report, frame);
 }
 
@@ -481,9 +481,9 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
       if (oldest == sons.end()) continue;
       changes_.clear();
       tree_.remove(*oldest, changes_);
-      apply(changes_, "the oldest of coast_sons " + std::to_string(most), report, frame);
+      apply(changes_, "the oldest of coast_sons " + std::to_string(most), report);
     }
-    if (!make_room(father_id, father_id, score, d.plot_id, report, frame)) continue;
+    if (!make_room(father_id, father_id, score, d.plot_id, report)) continue;
     PointTrack son;
     son.id = next_provisional_++;
     son.branch = BranchType::kSon;
@@ -501,7 +501,7 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
     son.quality = quality;
     son.score = score;
     tree_.add_branch(son.id, father_id, true);
-    add_event(frame, "branch_created", father_id,
+    add_event(events_, TrackEventType::kBranchCreated, father_id,
               name(BranchType::kSon, son.id) + " of " + name(BranchType::kFather, father_id) +
                   ": its last motion before plot " + plot + " (coast son, doubt " +
                   std::to_string(d.doubt).substr(0, 4) + ")");
@@ -556,7 +556,7 @@ double PointTracker::family_support(std::int64_t father) const {
   return best;
 }
 
-void PointTracker::promote_confirmed_sons(ScanReport& report, TrackFrame& frame) {
+void PointTracker::promote_confirmed_sons(ScanReport& report) {
   // The sons of an undecided father confirmed in the same scan: the one whose plot fits its
   // prediction best takes the number; the others, updated too, become independent
   // (§2.3 (2)). In pair order (JPDA weights, about 1 for a son alone in its cluster) the
@@ -569,8 +569,7 @@ void PointTracker::promote_confirmed_sons(ScanReport& report, TrackFrame& frame)
     if (track.life.status == TrackStatus::kDeleted || track.branch != BranchType::kSon) continue;
     changes_.clear();
     tree_.promote(track.id, changes_);
-    apply(changes_, "confirmed with plot " + std::to_string(son.plot_id) + " (rule 10)", report,
-          frame);
+    apply(changes_, "confirmed with plot " + std::to_string(son.plot_id) + " (rule 10)", report);
   }
   confirmed_sons_.clear();
 }
@@ -604,14 +603,14 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
                      profile_.association.gate_probability, profile_.track_life);
     const LifeChange change = advance_life(
         branch.life, true, mode_spread(branch.estimate, kLifeSpreadDims), profile_.track_life);
-    if (change.confirmed) add_event(frame, "confirmed", number, "");
+    if (change.confirmed) add_event(events_, TrackEventType::kConfirmed, number, "");
     return;
   }
   if (non_manoeuvre) {  // rule 8
     tree_.mark_non_manoeuvre_update(number);
     changes_.clear();
     tree_.prune_children(number, changes_);
-    apply(changes_, name(type, number) + " took plot " + plot + " (rule 8)", report, frame);
+    apply(changes_, name(type, number) + " took plot " + plot + " (rule 8)", report);
   }
   // Rule 10: every branch update is followed by the confirmation test. A branch that took
   // its pair is not deleted for its spread: the PDA posterior of a wide prior (a son started
@@ -637,7 +636,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
     branch.life.existence = std::max(branch.life.existence, tracks_[f].life.existence);
     changes_.clear();
     tree_.promote(number, changes_);
-    apply(changes_, "confirmed with plot " + plot + " (rule 10)", report, frame);
+    apply(changes_, "confirmed with plot " + plot + " (rule 10)", report);
     return;
   }
   if (confirmed && non_manoeuvre && of_undecided_father(number)) {  // see promote_confirmed_sons
@@ -651,7 +650,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
       branch.life.support > tracks_[f].life.support) {
     changes_.clear();
     tree_.promote(number, changes_);
-    apply(changes_, "confirmed with plot " + plot + " (rule 10)", report, frame);
+    apply(changes_, "confirmed with plot " + plot + " (rule 10)", report);
   }
 }
 
@@ -672,7 +671,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   const double parent_support = parent.life.support;
   const double score = parent.score + log_of(pair.probability);
   const std::int64_t father = tree_.father_of(parent_id);
-  if (!make_room(father, parent_id, score, plot.plot_id, report, frame)) return;
+  if (!make_room(father, parent_id, score, plot.plot_id, report)) return;
 
   Initiation initiation;
   initiation.plots = {*start, plot};
@@ -699,7 +698,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   tree_.add_branch(branch.id, parent_id);
   used_by_branch_[pair.plot] = 1;
   add_association(frame, branch.id, plot.plot_id, plot.scan, pair.probability);
-  add_event(frame, "branch_created", father,
+  add_event(events_, TrackEventType::kBranchCreated, father,
             name(branch.branch, branch.id) + " of " + name(parent_type, parent_id) + " from plot " +
                 std::to_string(plot.plot_id));
   ++report.branches_created;
@@ -730,7 +729,7 @@ ImmEstimate PointTracker::son_start(int father, const PlotMeasurement& plot) con
 }
 
 bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double score,
-                             std::int64_t plot_id, ScanReport& report, TrackFrame& frame) {
+                             std::int64_t plot_id, ScanReport& report) {
   const config::BranchingSpec& spec = profile_.branching;
   for (const bool per_father : {true, false}) {
     const int count = per_father ? tree_.branch_count(father) : tree_.total_branches();
@@ -753,14 +752,14 @@ bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double sc
     }
     if (least < 0 || tracks_[least].score >= score) {
       add_event(
-          frame, "branch_pruned", father,
+          events_, TrackEventType::kBranchPruned, father,
           "branch from plot " + std::to_string(plot_id) + " not created: least likely at " + where);
       ++report.branches_pruned;
       return false;
     }
     changes_.clear();
     tree_.remove(tracks_[least].id, changes_);
-    apply(changes_, "least likely at " + where, report, frame);
+    apply(changes_, "least likely at " + where, report);
   }
   return true;
 }
@@ -791,7 +790,7 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
       if (!reason.empty()) {
         changes_.clear();
         tree_.remove(branch.id, changes_);
-        apply(changes_, reason, report, frame);
+        apply(changes_, reason, report);
       }
       continue;
     }
@@ -807,12 +806,12 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
     if (advance_life(branch.life, false, spread, life_of(branch)).deleted) {
       changes_.clear();
       tree_.remove(branch.id, changes_);
-      apply(changes_, "no plot", report, frame);
+      apply(changes_, "no plot", report);
     }
   }
 }
 
-void PointTracker::retire_doomed_fathers(TrackFrame& frame) {
+void PointTracker::retire_doomed_fathers() {
   // A doomed father that may start no more sons goes with its last branch.
   for (PointTrack& father : tracks_) {
     if (father.branch != BranchType::kFather || father.replaced || !father.doomed ||
@@ -821,14 +820,14 @@ void PointTracker::retire_doomed_fathers(TrackFrame& frame) {
       continue;
     }
     father.life.status = TrackStatus::kDeleted;
-    add_event(frame, "deleted", father.id, "no branch left to replace it");
+    add_event(events_, TrackEventType::kDeleted, father.id, "no branch left to replace it");
     changes_.clear();
     tree_.remove(father.id, changes_);
   }
 }
 
 bool PointTracker::room_for_chain(std::int64_t father, double existence, std::int64_t plot_id,
-                                  ScanReport& report, TrackFrame& frame) {
+                                  ScanReport& report) {
   const int max_children = profile_.branching.max_children;
   if (tree_.can_branch(father, max_children)) return true;
   // No room: the chain displaces the father's least likely chain son (lowest existence),
@@ -846,7 +845,7 @@ bool PointTracker::room_for_chain(std::int64_t father, double existence, std::in
   apply(changes_,
         "a likelier plot chain (plot " + std::to_string(plot_id) + ") at max_children " +
             std::to_string(max_children),
-        report, frame);
+        report);
   return true;
 }
 
@@ -892,7 +891,7 @@ int PointTracker::lost_father_of(const PlotMeasurement& plot, double* nis) {
   return best;
 }
 
-void PointTracker::continue_lost_fathers(ScanReport& report, TrackFrame& frame) {
+void PointTracker::continue_lost_fathers(ScanReport& report) {
   // Nearest first (NIS in the father's manoeuvre gate): a father is replaced once, and a
   // second new track in its gate stays a track of its own.
   struct Claim {
@@ -934,7 +933,7 @@ void PointTracker::continue_lost_fathers(ScanReport& report, TrackFrame& frame) 
       if (least < 0) continue;
       changes_.clear();
       tree_.remove(tracks_[least].id, changes_);
-      apply(changes_, why, report, frame);
+      apply(changes_, why, report);
     }
     // §3.3 and rule 10: the new track is the lost father's son, confirmed, so it replaces
     // the father under the father's number; its own number never appeared as firm.
@@ -946,9 +945,9 @@ void PointTracker::continue_lost_fathers(ScanReport& report, TrackFrame& frame) 
     tracks_[t].life.support += tracks_[f].life.support;
     changes_.clear();
     tree_.promote(number, changes_, false);
-    std::erase_if(frame.events,
-                  [&](const TrackEvent& e) { return e.type == "confirmed" && e.track == number; });
-    apply(changes_, why + " (§3.3)", report, frame);
+    // Not a new track after all: its "confirmed" (held) is superseded by the promotion.
+    supersede(events_, TrackEventType::kConfirmed, number);
+    apply(changes_, why + " (§3.3)", report);
   }
   confirmed_now_.clear();
 }
@@ -962,8 +961,8 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
   branch.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
   branch.life.existence = profile_.track_life.initial_existence;
   branch.estimate = start_estimate(initiation, branch.life);
-  if (!room_for_chain(father_id, branch.life.existence, plot.plot_id, report, frame) ||
-      !make_room(father_id, father_id, score, plot.plot_id, report, frame)) {
+  if (!room_for_chain(father_id, branch.life.existence, plot.plot_id, report) ||
+      !make_room(father_id, father_id, score, plot.plot_id, report)) {
     return false;
   }
   branch.id = next_provisional_++;
@@ -981,7 +980,7 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
   for (const PlotMeasurement& p : initiation.plots) {
     detail.append(" ").append(std::to_string(p.plot_id));
   }
-  add_event(frame, "branch_created", father_id,
+  add_event(events_, TrackEventType::kBranchCreated, father_id,
             detail.append(" (a plot chain in its manoeuvre gate)"));
   add_association(frame, branch.id, plot.plot_id, plot.scan, 1.0);
   ++report.branches_created;
@@ -991,7 +990,7 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
 }
 
 void PointTracker::apply(std::span<const BranchChange> changes, const std::string& reason,
-                         ScanReport& report, TrackFrame& frame) {
+                         ScanReport& report) {
   for (const BranchChange& change : changes) {
     const int i = slot(change.track);
     if (i < 0) continue;
@@ -1003,13 +1002,14 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
     switch (change.kind) {
       case BranchChange::Kind::kPruned:
         track.life.status = TrackStatus::kDeleted;
-        add_event(frame, "branch_pruned", change.father, who + ": " + reason);
+        add_event(events_, TrackEventType::kBranchPruned, change.father, who + ": " + reason);
         ++report.branches_pruned;
         break;
       case BranchChange::Kind::kIndependent:
         // A new father: numbered once confirmed (number_confirmed).
         track.branch = BranchType::kFather;
-        add_event(frame, "initiated", change.track, "independent " + who + ": " + reason);
+        add_event(events_, TrackEventType::kInitiated, change.track,
+                  "independent " + who + ": " + reason);
         ++report.initiated;
         break;
       case BranchChange::Kind::kPromoted: {
@@ -1018,9 +1018,7 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
           PointTrack& old = tracks_[f];
           // A father its life deleted in this batch lives on in the branch: no "deleted".
           if (old.life.status == TrackStatus::kDeleted) {
-            std::erase_if(frame.events, [&](const TrackEvent& e) {
-              return e.type == "deleted" && e.track == change.father;
-            });
+            supersede(events_, TrackEventType::kDeleted, change.father);
           }
           old.replaced = true;
           old.life.status = TrackStatus::kDeleted;
@@ -1032,7 +1030,7 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
         replaced_now_.push_back(change.father);
         slots_.erase(change.track);
         slots_[change.father] = i;
-        add_event(frame, "branch_promoted", change.father,
+        add_event(events_, TrackEventType::kBranchPromoted, change.father,
                   who + " replaces " + name(BranchType::kFather, change.father) + ": " + reason);
         ++report.branches_promoted;
         break;

@@ -97,7 +97,8 @@ void PointTracker::number_confirmed(TrackFrame& frame) {
       }
       if (e.track != provisional) continue;
       e.track = track.id;
-      if (e.type == "confirmed") e.detail = "tentative " + std::to_string(provisional);
+      if (e.type == TrackEventType::kConfirmed)
+        e.detail = "tentative " + std::to_string(provisional);
     }
   }
 }

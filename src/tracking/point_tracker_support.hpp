@@ -6,6 +6,7 @@
 #include <span>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -76,8 +77,17 @@ inline int looks_between(double sweep_a, double sweep_b) {
   return static_cast<int>(std::lround(std::abs(sweep_b - sweep_a) / (2.0 * 3.141592653589793)));
 }
 
-inline void add_event(TrackFrame& frame, const char* type, std::int64_t track, std::string detail) {
-  frame.events.push_back({type, track, std::move(detail)});
+/// Holds an event of this batch until the batch has decided it (PointTracker::events_).
+inline void add_event(std::vector<TrackEvent>& held, TrackEventType type, std::int64_t track,
+                      std::string detail) {
+  held.push_back({type, track, std::move(detail), {}});
+}
+
+/// A later decision of the batch supersedes `track`'s held events of `type` (a "confirmed"
+/// that §3.3 makes a lost father's continuation, a "deleted" undone by the branch that
+/// replaces the father): they are never emitted.
+inline void supersede(std::vector<TrackEvent>& held, TrackEventType type, std::int64_t track) {
+  std::erase_if(held, [&](const TrackEvent& e) { return e.type == type && e.track == track; });
 }
 
 }  // namespace skytrack::tracking_detail

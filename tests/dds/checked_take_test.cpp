@@ -117,7 +117,7 @@ TrackFrame frame() {
   f.tracks = {t, t};
   f.tracks[1].id = 6;
   f.associations = {{5, 1, 0.9, 8}, {6, 2, 0.4, std::nullopt}};
-  f.events = {{"initiated", 6, "from plot 2"}};
+  f.events = {{TrackEventType::kInitiated, 6, "from plot 2", {}}};
   return f;
 }
 

@@ -269,9 +269,9 @@ TrackFrame frame_with(std::vector<TrackReport> tracks) {
   frame.time = 420.0;
   frame.tracks = std::move(tracks);
   frame.associations = {{12, 3, 0.93, std::nullopt}, {13, 4, 1.0, 41}};
-  frame.events = {{"branch_created", 12, "son 2 from plot 5"},
-                  {"deleted", 14, ""},
-                  {"initiated", 13, "UTF-8 d\xC3\xA9tail \xE2\x9C\x93"}};
+  frame.events = {{TrackEventType::kBranchCreated, 12, "son 2 from plot 5", {}},
+                  {TrackEventType::kDeleted, 14, "", {}},
+                  {TrackEventType::kInitiated, 13, "UTF-8 d\xC3\xA9tail \xE2\x9C\x93", {}}};
   return frame;
 }
 

@@ -73,7 +73,8 @@ TrackFrame track_frame() {
   group.members = 15;
   frame.tracks = {point, group};
   frame.associations = {{12, 3, 0.93, std::nullopt}, {20, 4, 1.0, 41}};
-  frame.events = {{"initiated", 12, "UTF-8 d\xC3\xA9tail"}, {"deleted", 14, ""}};
+  frame.events = {{TrackEventType::kInitiated, 12, "UTF-8 d\xC3\xA9tail", {}},
+                  {TrackEventType::kDeleted, 14, "", {}}};
   return frame;
 }
 

@@ -124,7 +124,7 @@ TEST(TrackFrameWriter, RoundTripsBitExactly) {
   group.members = 15;
   frame.tracks = {point, group};
   frame.associations = {{12, 3, 0.93, std::nullopt}, {13, 4, 1.0, 41}};
-  frame.events = {{"branch_created", 12, "son 2 from \"plot\" 5\n"}};
+  frame.events = {{TrackEventType::kBranchCreated, 12, "son 2 from \"plot\" 5\n", {}}};
 
   const auto parsed = parse_track_frame(to_json(frame));
   ASSERT_TRUE(parsed) << parsed.error().message;

@@ -1,5 +1,6 @@
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -7,6 +8,9 @@
 
 namespace skytrack {
 namespace {
+
+// The daemon's per-batch call cannot throw (std::bad_alloc terminates, by design).
+static_assert(noexcept(std::declval<Pipeline&>().process(std::declval<const PlotScan&>())));
 
 PlotScan batch(std::uint64_t number, double time, std::vector<Plot> plots) {
   PlotScan scan;

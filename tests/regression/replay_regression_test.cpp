@@ -71,7 +71,7 @@ void digest(const TrackFrame& f, std::ostream& out) {
     if (a.scan) out << " s " << *a.scan;
     out << '\n';
   }
-  for (const TrackEvent& e : f.events) out << "E " << e.type << ' ' << e.track << '\n';
+  for (const TrackEvent& e : f.events) out << "E " << type_name(e) << ' ' << e.track << '\n';
 }
 
 std::vector<std::string> lines_of(const std::string& text) {

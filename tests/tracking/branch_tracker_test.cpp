@@ -123,7 +123,7 @@ struct Script {
     return nullptr;
   }
   /// Events of one type, as "track: detail".
-  std::vector<std::string> events(const std::string& type) const {
+  std::vector<std::string> events(TrackEventType type) const {
     std::vector<std::string> out;
     for (const TrackEvent& e : frame.events) {
       if (e.type == type) out.push_back(std::to_string(shown(e.track)) + ": " + shown(e.detail));
@@ -189,7 +189,7 @@ TEST(BranchTracker, FatherManoeuvrePairStartsAHiddenSonFromTheFathersLastPlot) {
   // WHEN the next plot is 150 m off its prediction (manoeuvre gate only)
   s.scan(4, {{400.0, 150.0}});
   // THEN son 2 is created from that plot (rule 6, §2.3 (5)) and only the father is reported
-  EXPECT_EQ(s.events("branch_created"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchCreated),
             (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_EQ(s.frame.tracks[0].status, TrackStatus::kCoasting);
@@ -224,14 +224,16 @@ TEST(BranchTracker, ConfirmedSonReplacesTheFatherAndKeepsItsNumber) {
   s.scan(5, {{500.0, 300.0}});
   // THEN the son is updated, passes confirmation and replaces the father (rules 8, 10;
   // §2.3 (2)): track 1 is now where the son is, the father is gone, no number changes
-  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
-  EXPECT_EQ(s.events("branch_promoted")[0].rfind("1: son 2 of track 1 replaces track 1", 0), 0u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
+  EXPECT_EQ(
+      s.events(TrackEventType::kBranchPromoted)[0].rfind("1: son 2 of track 1 replaces track 1", 0),
+      0u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   ASSERT_NE(s.track(1), nullptr);
   EXPECT_EQ(s.track(1)->status, TrackStatus::kConfirmed);
   EXPECT_NEAR(s.track(1)->position.y(), 300.0, 30.0);
   EXPECT_TRUE(s.associated(2, 501));
-  EXPECT_TRUE(s.events("deleted").empty());
+  EXPECT_TRUE(s.events(TrackEventType::kDeleted).empty());
   EXPECT_EQ(s.live_branches(), 0);
   EXPECT_FALSE(s.tracker.branch_tree().contains(provisional(2)));
   EXPECT_EQ(s.tracker.branch_tree().find(1)->type, BranchType::kFather);
@@ -249,7 +251,7 @@ TEST(BranchTracker, FatherNonManoeuvreUpdateDeletesSonsWithoutOne) {
   // WHEN the father's own next plot arrives (the 150 m plot was a false alarm)
   s.scan(5, {{500.0, 0.0}});
   // THEN the father is updated and the son deleted (rule 5, §2.3 (1))
-  EXPECT_EQ(s.events("branch_pruned"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchPruned),
             (std::vector<std::string>{"1: son 2 of track 1: track 1 took plot 501 (rule 5)"}));
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_TRUE(s.associated(1, 501));
@@ -267,14 +269,15 @@ TEST(BranchTracker, SonWithANonManoeuvreUpdateBecomesAnIndependentFather) {
   ASSERT_EQ(s.frame.tracks.at(0).status, TrackStatus::kConfirmed);
   s.scan(4, {{400.0, 150.0}});  // son 2
   s.scan(5, {{500.0, 300.0}});  // son 2's non-manoeuvre update: 3 of 4, not confirmed
-  ASSERT_TRUE(s.events("branch_promoted").empty());
+  ASSERT_TRUE(s.events(TrackEventType::kBranchPromoted).empty());
   ASSERT_TRUE(s.tracker.branch_tree().find(provisional(2))->non_manoeuvre_updated);
   // WHEN the father takes its own plot again, and the son its own
   s.scan(6, {{600.0, 0.0}, {600.0, 450.0}});
   // THEN the son leaves the tree as father 2 with its own number (rule 5, §2.3 (1)) and both
   // are reported
-  EXPECT_EQ(s.events("initiated").size(), 1u);
-  EXPECT_EQ(s.events("initiated")[0].rfind("2: independent son 2 of track 1", 0), 0u);
+  EXPECT_EQ(s.events(TrackEventType::kInitiated).size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kInitiated)[0].rfind("2: independent son 2 of track 1", 0),
+            0u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1, 2}));
   EXPECT_NEAR(s.track(1)->position.y(), 0.0, 30.0);
   EXPECT_NEAR(s.track(2)->position.y(), 450.0, 30.0);
@@ -293,7 +296,7 @@ TEST(BranchTracker, SonManoeuvrePairStartsAGrandsonThatReplacesTheFather) {
   s.scan(5, {{500.0, 100.0}});
   // THEN grandson 3 is created from it (rule 7, §2.3 (4)), starting at the son's first plot
   // (x = 300 at t = 3), so its velocity is (100, 50) m/s
-  EXPECT_EQ(s.events("branch_created"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchCreated),
             (std::vector<std::string>{"1: grandson 3 of son 2 from plot 501"}));
   const BranchNode* grandson = s.tracker.branch_tree().find(provisional(3));
   ASSERT_NE(grandson, nullptr);
@@ -304,10 +307,12 @@ TEST(BranchTracker, SonManoeuvrePairStartsAGrandsonThatReplacesTheFather) {
   s.scan(6, {{600.0, 150.0}});
   // THEN it is updated (rule 9), confirmed and replaces the father under number 1; the son
   // (no non-manoeuvre update) is deleted (rule 10, §2.3 (3))
-  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
-  EXPECT_EQ(s.events("branch_promoted")[0].rfind("1: grandson 3 of son 2 replaces track 1", 0), 0u);
-  EXPECT_EQ(s.events("branch_pruned").size(), 1u);
-  EXPECT_EQ(s.events("branch_pruned")[0].rfind("1: son 2 of track 1", 0), 0u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted)[0].rfind(
+                "1: grandson 3 of son 2 replaces track 1", 0),
+            0u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPruned).size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPruned)[0].rfind("1: son 2 of track 1", 0), 0u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_NEAR(s.track(1)->position.y(), 150.0, 30.0);
   EXPECT_EQ(s.live_branches(), 0);
@@ -326,7 +331,7 @@ TEST(BranchTracker, GrandsonIsUpdatedThroughItsManoeuvreGate) {
   // father), and no non-manoeuvre rule fired for it (rule 8 prunes only grandsons of an
   // updated son)
   EXPECT_TRUE(s.associated(3, 601));
-  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
 }
 
 TEST(BranchTracker, TwoPlotsInTheManoeuvreGateStartTwoSonsAndTheLikelierWins) {
@@ -334,13 +339,13 @@ TEST(BranchTracker, TwoPlotsInTheManoeuvreGateStartTwoSonsAndTheLikelierWins) {
   Script s(branch_profile());
   s.start();
   s.scan(4, {{400.0, 150.0}, {400.0, -175.0}});
-  EXPECT_EQ(s.events("branch_created").size(), 2u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchCreated).size(), 2u);
   EXPECT_EQ(s.tracker.branch_tree().branch_count(1), 2);
   // WHEN the next plot continues one of them
   s.scan(5, {{500.0, -350.0}});
   // THEN that son replaces the father under number 1 and the other son is deleted
-  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
-  EXPECT_EQ(s.events("branch_pruned").size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPruned).size(), 1u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_NEAR(s.track(1)->position.y(), -350.0, 30.0);
   EXPECT_EQ(s.live_branches(), 0);
@@ -355,10 +360,11 @@ TEST(BranchTracker, AtTheBranchCapTheLeastLikelyBranchIsPruned) {
   s.start();
   s.scan(4, {{400.0, 150.0}, {400.0, -175.0}});
   // THEN one son is created and the other decision is a pruning at the cap
-  EXPECT_EQ(s.events("branch_created"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchCreated),
             (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
-  ASSERT_EQ(s.events("branch_pruned").size(), 1u);
-  EXPECT_NE(s.events("branch_pruned")[0].find("cap of 1 per father"), std::string::npos);
+  ASSERT_EQ(s.events(TrackEventType::kBranchPruned).size(), 1u);
+  EXPECT_NE(s.events(TrackEventType::kBranchPruned)[0].find("cap of 1 per father"),
+            std::string::npos);
   EXPECT_EQ(s.tracker.branch_tree().branch_count(1), 1);
 }
 
@@ -368,7 +374,7 @@ TEST(BranchTracker, NoRoomLeftUnderMaxChildrenCreatesNoMoreSons) {
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 150.0}, {400.0, -175.0}});
-  EXPECT_EQ(s.events("branch_created").size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchCreated).size(), 1u);
   EXPECT_EQ(s.tracker.branch_tree().branch_count(1), 1);
 }
 
@@ -377,9 +383,10 @@ TEST(BranchTracker, BranchWithoutPlotsIsPrunedByItsTrackLife) {
   s.start();
   s.scan(4, {{400.0, 150.0}});  // son 2 (tentative, deleted after 2 consecutive misses)
   s.scan(5, {});
-  EXPECT_TRUE(s.events("branch_pruned").empty());
+  EXPECT_TRUE(s.events(TrackEventType::kBranchPruned).empty());
   s.scan(6, {});
-  EXPECT_EQ(s.events("branch_pruned"), (std::vector<std::string>{"1: son 2 of track 1: no plot"}));
+  EXPECT_EQ(s.events(TrackEventType::kBranchPruned),
+            (std::vector<std::string>{"1: son 2 of track 1: no plot"}));
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
 }
 
@@ -390,14 +397,14 @@ TEST(BranchTracker, FatherDeletedByItsLifeWaitsUnreportedForItsSon) {
   // WHEN track 1 misses its plot and a plot lies in its manoeuvre gate
   s.scan(4, {{400.0, 150.0}});
   // THEN it is suspended (not reported, not deleted) and son 2 starts from the plot
-  EXPECT_EQ(s.events("suspended").size(), 1u);
-  EXPECT_TRUE(s.events("deleted").empty());
+  EXPECT_EQ(s.events(TrackEventType::kSuspended).size(), 1u);
+  EXPECT_TRUE(s.events(TrackEventType::kDeleted).empty());
   EXPECT_TRUE(s.reported().empty());
-  EXPECT_EQ(s.events("branch_created"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchCreated),
             (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
   // WHEN the son's next plot arrives, THEN the son replaces it and number 1 is back
   s.scan(5, {{500.0, 300.0}});
-  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_NEAR(s.track(1)->position.y(), 300.0, 30.0);
 }
@@ -411,17 +418,17 @@ TEST(BranchTracker, FatherTooUncertainToGateYieldsToItsSon) {
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 150.0}});
-  ASSERT_EQ(s.events("branch_created"),
+  ASSERT_EQ(s.events(TrackEventType::kBranchCreated),
             (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
-  ASSERT_TRUE(s.events("suspended").empty());
+  ASSERT_TRUE(s.events(TrackEventType::kSuspended).empty());
   // WHEN the next scan has a plot on the father's straight line and one on the son's
   s.scan(5, {{500.0, 0.0}, {500.0, 300.0}});
   // THEN the father, too uncertain to gate, is suspended before it can take the plot and cut
   // its son (rule 5); the son takes its plot, is confirmed and keeps number 1 (rule 10)
-  EXPECT_EQ(s.events("suspended").size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kSuspended).size(), 1u);
   EXPECT_FALSE(s.associated(1, 501));
   EXPECT_TRUE(s.associated(2, 502));
-  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_NEAR(s.track(1)->position.y(), 300.0, 30.0);
 }
@@ -436,9 +443,9 @@ TEST(BranchTracker, FatherSuspendedByItsUpdateStartsSonsFromItsLikelyPlots) {
   s.scan(4, {{400.0, 30.0}, {400.0, -30.0}});
   // THEN its update suspends it, and the plots its IMM-JPDA weighed above its miss start
   // its sons with those weights (not the manoeuvre gate's): one son per plot
-  ASSERT_EQ(s.events("suspended").size(), 1u);
+  ASSERT_EQ(s.events(TrackEventType::kSuspended).size(), 1u);
   EXPECT_TRUE(s.reported().empty());
-  EXPECT_EQ(s.events("branch_created"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchCreated),
             (std::vector<std::string>{"1: son 2 of track 1 from plot 401",
                                       "1: son 3 of track 1 from plot 402"}));
   for (const std::int64_t plot : {401, 402}) {
@@ -452,7 +459,7 @@ TEST(BranchTracker, FatherSuspendedByItsUpdateStartsSonsFromItsLikelyPlots) {
   }
   // AND the son that is followed replaces it under its number
   s.scan(5, {{500.0, 60.0}});
-  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_NEAR(s.track(1)->position.y(), 60.0, 30.0);
 }
@@ -465,17 +472,17 @@ TEST(BranchTracker, AmbiguousUpdateLetsTheSonsFromItsPlotsDecideWhileTheFatherIs
   s.start();
   s.scan(4, {{400.0, 30.0}, {400.0, -30.0}});
   // THEN the father is undecided (still reported) and each plot starts a son
-  EXPECT_EQ(s.events("undecided").size(), 1u);
-  EXPECT_TRUE(s.events("suspended").empty());
+  EXPECT_EQ(s.events(TrackEventType::kUndecided).size(), 1u);
+  EXPECT_TRUE(s.events(TrackEventType::kSuspended).empty());
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
-  EXPECT_EQ(s.events("branch_created"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchCreated),
             (std::vector<std::string>{"1: son 2 of track 1 from plot 401",
                                       "1: son 3 of track 1 from plot 402"}));
   // WHEN the next plot continues the upper one, THEN that son replaces the father under
   // number 1 and the other is pruned (no non-manoeuvre update since its birth, rule 5)
   s.scan(5, {{500.0, 60.0}});
   EXPECT_FALSE(s.associated(1, 501));  // the undecided father takes no non-manoeuvre pair
-  EXPECT_EQ(s.events("branch_promoted"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted),
             (std::vector<std::string>{
                 "1: son 2 of track 1 replaces track 1: confirmed with plot 501 (rule 10)"}));
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
@@ -498,13 +505,13 @@ TEST(BranchTracker, SonUpdatedWhenItsSiblingWinsBecomesATrackOfItsOwn) {
   // number 1 and son 3, updated in the same scan, becomes a track of its own (§2.3 (2)),
   // numbered 2 (the next number), instead of being deleted as a son without a non-manoeuvre
   // update
-  EXPECT_EQ(s.events("branch_promoted"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted),
             (std::vector<std::string>{
                 "1: son 2 of track 1 replaces track 1: confirmed with plot 501 (rule 10)"}));
-  EXPECT_EQ(s.events("initiated"),
+  EXPECT_EQ(s.events(TrackEventType::kInitiated),
             (std::vector<std::string>{
                 "2: independent son 3 of track 1: confirmed with plot 501 (rule 10)"}));
-  EXPECT_TRUE(s.events("branch_pruned").empty());
+  EXPECT_TRUE(s.events(TrackEventType::kBranchPruned).empty());
   EXPECT_EQ(s.live_branches(), 0);
   ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1, 2}));
   EXPECT_NEAR(s.track(1)->position.y(), 60.0, 20.0);
@@ -525,8 +532,8 @@ TEST(BranchTracker, AnotherTracksLikeliestPlotMakesNoAmbiguity) {
   int undecided = 0, sons = 0;
   for (int t = 0; t <= 8; ++t) {
     s.scan(t, {{100.0 * t, 5.0}, {100.0 * t, -5.0}});
-    undecided += static_cast<int>(s.events("undecided").size());
-    sons += static_cast<int>(s.events("branch_created").size());
+    undecided += static_cast<int>(s.events(TrackEventType::kUndecided).size());
+    sons += static_cast<int>(s.events(TrackEventType::kBranchCreated).size());
   }
   // THEN the other plot of each track is the other track's likeliest: neither track is ever
   // undecided, no son starts, and tracks 1 and 2 keep their numbers
@@ -559,7 +566,7 @@ TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
   const config::TrackingProfile profile = suspending_profile();
   Script s(profile);
   s.suspend_father();  // suspended, no plot to branch from
-  EXPECT_EQ(s.events("suspended").size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kSuspended).size(), 1u);
   EXPECT_TRUE(s.reported().empty());
   // THEN its branching ends when its misses reach delete_confirmed_misses, and it is deleted
   // (and reported so, once) initiation.n scans later, the time a plot chain of its target
@@ -567,7 +574,7 @@ TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
   int deleted_at = 0;
   for (int t = 5; t <= 20 && deleted_at == 0; ++t) {
     s.scan(t, {});
-    if (!s.events("deleted").empty()) deleted_at = t;
+    if (!s.events(TrackEventType::kDeleted).empty()) deleted_at = t;
   }
   EXPECT_EQ(deleted_at, 3 + profile.track_life.delete_confirmed_misses + profile.initiation.n);
   ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
@@ -580,26 +587,26 @@ TEST(BranchTracker, PlotChainInTheManoeuvreGateOfASuspendedFatherContinuesIt) {
   // father's manoeuvre gate, so those plots start no son
   Script s(suspending_profile());
   s.suspend_father();
-  ASSERT_EQ(s.events("suspended").size(), 1u);
+  ASSERT_EQ(s.events(TrackEventType::kSuspended).size(), 1u);
   s.scan(5, {{500.0, 1000.0}});
   s.scan(6, {{600.0, 700.0}});
   s.scan(7, {});
-  ASSERT_TRUE(s.events("branch_created").empty());
+  ASSERT_TRUE(s.events(TrackEventType::kBranchCreated).empty());
   // WHEN the chain's third plot falls inside the manoeuvre gate (100 m off) in the scan whose
   // miss, its fifth, ends the father's own branching
   s.scan(8, {{800.0, 100.0}});
   // THEN the chain (plot-to-plot manoeuvre association, §3.3) starts son 2 of track 1 rather
   // than a new track, and the father waits for it, unreported
   EXPECT_EQ(
-      s.events("branch_created"),
+      s.events(TrackEventType::kBranchCreated),
       (std::vector<std::string>{
           "1: son 2 of track 1 from plots 501 601 801 (a plot chain in its manoeuvre gate)"}));
-  EXPECT_TRUE(s.events("initiated").empty());
-  EXPECT_TRUE(s.events("deleted").empty());
+  EXPECT_TRUE(s.events(TrackEventType::kInitiated).empty());
+  EXPECT_TRUE(s.events(TrackEventType::kDeleted).empty());
   EXPECT_TRUE(s.reported().empty());
   // WHEN the son takes its next plot, THEN it is confirmed and carries number 1 (rule 10)
   s.scan(9, {{900.0, -200.0}});
-  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
   ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_NEAR(s.track(1)->position.y(), -200.0, 30.0);
   EXPECT_NEAR(s.track(1)->velocity.y(), -300.0, 30.0);
@@ -614,14 +621,15 @@ TEST(BranchTracker, ChainOutsideTheManoeuvreGateOfASuspendedFatherIsANewTrack) {
   s.scan(7, {});
   s.scan(8, {{800.0, 1000.0}});
   // THEN it is initiated as track 2, and the father, with no branch, waits unreported
-  EXPECT_TRUE(s.events("branch_created").empty());
-  EXPECT_EQ(s.events("initiated"), (std::vector<std::string>{"2: from plots 501 601 801"}));
+  EXPECT_TRUE(s.events(TrackEventType::kBranchCreated).empty());
+  EXPECT_EQ(s.events(TrackEventType::kInitiated),
+            (std::vector<std::string>{"2: from plots 501 601 801"}));
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{2}));
   // AND track 2, confirmed far from the father's manoeuvre gate, is numbered 2 (the next
   // number)
   s.scan(9, {{900.0, 1000.0}});
-  EXPECT_EQ(s.events("confirmed"), (std::vector<std::string>{"2: tentative 2"}));
-  EXPECT_TRUE(s.events("branch_promoted").empty());
+  EXPECT_EQ(s.events(TrackEventType::kConfirmed), (std::vector<std::string>{"2: tentative 2"}));
+  EXPECT_TRUE(s.events(TrackEventType::kBranchPromoted).empty());
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{2}));
 }
 
@@ -634,7 +642,8 @@ TEST(BranchTracker, NewTrackConfirmedInTheManoeuvreGateOfASuspendedFatherTakesIt
   s.scan(5, {{500.0, 1000.0}});
   s.scan(6, {{600.0, 700.0}});
   s.scan(7, {{700.0, 400.0}});
-  ASSERT_EQ(s.events("initiated"), (std::vector<std::string>{"2: from plots 501 601 701"}));
+  ASSERT_EQ(s.events(TrackEventType::kInitiated),
+            (std::vector<std::string>{"2: from plots 501 601 701"}));
   ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{2}));
   ASSERT_EQ(s.frame.tracks[0].status, TrackStatus::kTentative);
   // WHEN track 2 is confirmed on a plot 100 m off the father's prediction, inside its
@@ -642,10 +651,10 @@ TEST(BranchTracker, NewTrackConfirmedInTheManoeuvreGateOfASuspendedFatherTakesIt
   s.scan(8, {{800.0, 100.0}});
   // THEN it is the father's son, confirmed, and replaces it under number 1 (§3.3, rule 10):
   // number 2 is never reported as a firm track
-  EXPECT_EQ(s.events("branch_promoted"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted),
             (std::vector<std::string>{"1: son 2 of track 1 replaces track 1: track 2 confirmed "
                                       "in its manoeuvre gate (§3.3)"}));
-  EXPECT_TRUE(s.events("confirmed").empty());
+  EXPECT_TRUE(s.events(TrackEventType::kConfirmed).empty());
   ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_EQ(s.frame.tracks[0].status, TrackStatus::kConfirmed);
   EXPECT_NEAR(s.track(1)->position.y(), 100.0, 30.0);
@@ -665,17 +674,17 @@ TEST(BranchTracker, TwoNewTracksConfirmedInOneSuspendedFathersGateNearestTakesIt
   s.scan(5, {{500.0, 1000.0}, {500.0, -1000.0}});
   s.scan(6, {{600.0, 700.0}, {600.0, -700.0}});
   s.scan(7, {{700.0, 400.0}, {700.0, -400.0}});
-  ASSERT_EQ(s.events("initiated"),
+  ASSERT_EQ(s.events(TrackEventType::kInitiated),
             (std::vector<std::string>{"2: from plots 502 602 702", "3: from plots 501 601 701"}));
   // WHEN both are confirmed in the same scan inside the father's manoeuvre gate, track 2's
   // plot nearer the father's prediction (800, 0)
   s.scan(8, {{800.0, 120.0}, {800.0, -60.0}});
   // THEN only track 2 replaces the father, under number 1; track 3 is confirmed as itself,
   // numbered 2 (the next number)
-  EXPECT_EQ(s.events("branch_promoted"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted),
             (std::vector<std::string>{"1: son 2 of track 1 replaces track 1: track 2 confirmed "
                                       "in its manoeuvre gate (§3.3)"}));
-  EXPECT_EQ(s.events("confirmed"), (std::vector<std::string>{"2: tentative 3"}));
+  EXPECT_EQ(s.events(TrackEventType::kConfirmed), (std::vector<std::string>{"2: tentative 3"}));
   std::vector<std::int64_t> reported = s.reported();
   std::sort(reported.begin(), reported.end());
   ASSERT_EQ(reported, (std::vector<std::int64_t>{1, 2}));
@@ -685,7 +694,7 @@ TEST(BranchTracker, TwoNewTracksConfirmedInOneSuspendedFathersGateNearestTakesIt
   s.scan(9, {{900.0, 280.0}, {900.0, -180.0}});
   EXPECT_TRUE(s.associated(1, 901));
   EXPECT_TRUE(s.associated(2, 902));
-  EXPECT_TRUE(s.events("branch_promoted").empty());
+  EXPECT_TRUE(s.events(TrackEventType::kBranchPromoted).empty());
 }
 
 /// branch_profile() with a left-turn mode (0.5 rad/s) beside CV in the IMM.
@@ -714,13 +723,13 @@ TEST(BranchTracker, FatherThatMissedTakesPlotsOnlyOnItsLastMotion) {
     s.scan(5, {{470.0, 90.0}});
     if (!on) {  // THEN without the rule the father takes it and is pulled off its line
       EXPECT_TRUE(s.associated(1, 501));
-      EXPECT_TRUE(s.events("branch_created").empty());
+      EXPECT_TRUE(s.events(TrackEventType::kBranchCreated).empty());
       EXPECT_GT(s.track(1)->position.y(), 20.0);
       continue;
     }
     // THEN with it the father coasts on, and the plot, in its manoeuvre gate, starts son 2
     EXPECT_FALSE(s.associated(1, 501));
-    EXPECT_EQ(s.events("branch_created"),
+    EXPECT_EQ(s.events(TrackEventType::kBranchCreated),
               (std::vector<std::string>{"1: son 2 of track 1 from plot 501"}));
     EXPECT_EQ(s.track(1)->status, TrackStatus::kCoasting);
     EXPECT_NEAR(s.track(1)->position.y(), 0.0, 20.0);
@@ -728,7 +737,7 @@ TEST(BranchTracker, FatherThatMissedTakesPlotsOnlyOnItsLastMotion) {
     s.scan(6, {{600.0, 0.0}});
     // THEN the father takes it and its son is pruned (rule 5): number 1 holds the target
     EXPECT_TRUE(s.associated(1, 601));
-    EXPECT_EQ(s.events("branch_pruned"),
+    EXPECT_EQ(s.events(TrackEventType::kBranchPruned),
               (std::vector<std::string>{"1: son 2 of track 1: track 1 took plot 601 (rule 5)"}));
     EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
     EXPECT_EQ(s.track(1)->status, TrackStatus::kConfirmed);
@@ -854,7 +863,7 @@ TEST(BranchTracker, MissingFatherCoastsOnItsLastMotionWhileItsSonFollowsTheTurn)
     EXPECT_NEAR(s.track(1)->position.x(), 499.5, 30.0);
     EXPECT_NEAR(s.track(1)->position.y(), 185.9, 30.0);
     if (on) {
-      EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+      EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
       EXPECT_TRUE(s.associated(2, 601));
     }
   }
@@ -873,12 +882,12 @@ TEST(BranchTracker, LastMotionGateLeavesATurnModesPlotToASon) {
     s.scan(4, {{385.0, 60.0}});
     if (!last_motion) {  // THEN the union gate lets the father take it
       EXPECT_TRUE(s.associated(1, 401));
-      EXPECT_TRUE(s.events("branch_created").empty());
+      EXPECT_TRUE(s.events(TrackEventType::kBranchCreated).empty());
       continue;
     }
     // THEN the last motion's gate does not: the plot starts son 2, the father coasts on
     EXPECT_FALSE(s.associated(1, 401));
-    EXPECT_EQ(s.events("branch_created"),
+    EXPECT_EQ(s.events(TrackEventType::kBranchCreated),
               (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
     EXPECT_NEAR(s.track(1)->position.y(), 0.0, 1.0);
   }
@@ -923,16 +932,16 @@ TEST(BranchTracker, SonConfirmedOnExistenceWeighsItsPlotsAgainstTheClutter) {
     Script s(profile);
     s.start();
     s.scan(4, {{400.0, 150.0}});
-    ASSERT_EQ(s.events("branch_created").size(), 1u);
+    ASSERT_EQ(s.events(TrackEventType::kBranchCreated).size(), 1u);
     s.scan(5, {{500.0, 300.0}});
     if (clutter < 1e-6) {
       // THEN in sparse clutter one plot where it predicts confirms it, as M-of-N would
-      EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+      EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
       EXPECT_NEAR(s.track(1)->position.y(), 300.0, 30.0);
       continue;
     }
     // THEN in the clutter area it is not confirmed yet (M-of-N would, on this one plot)
-    EXPECT_TRUE(s.events("branch_promoted").empty());
+    EXPECT_TRUE(s.events(TrackEventType::kBranchPromoted).empty());
     EXPECT_TRUE(s.associated(2, 501));
     EXPECT_EQ(s.live_branches(), 1);
     EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
@@ -961,7 +970,7 @@ TEST(BranchTracker, CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather) {
   // THEN the father takes it (rule 5), and as the plot may be a false alarm (its clutter
   // density is close to its density under the track) its last motion stays as coast son 2
   ASSERT_TRUE(s.associated(1, 601));
-  const std::vector<std::string> created = s.events("branch_created");
+  const std::vector<std::string> created = s.events(TrackEventType::kBranchCreated);
   ASSERT_EQ(created.size(), 1u);
   EXPECT_EQ(created[0].rfind("1: son 2 of track 1: its last motion before plot 601 (coast son", 0),
             0u);
@@ -973,7 +982,7 @@ TEST(BranchTracker, CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather) {
       EXPECT_TRUE(s.associated(1, 702));
       EXPECT_TRUE(s.associated(2, 701));
     }
-    const std::vector<std::string> now = s.events("branch_promoted");
+    const std::vector<std::string> now = s.events(TrackEventType::kBranchPromoted);
     promoted.insert(promoted.end(), now.begin(), now.end());
   }
   // THEN the coast son, better supported than the father since the split, replaces it
@@ -991,7 +1000,7 @@ TEST(BranchTracker, CoastSonReplacesTheFatherOnceItsSupportSinceTheSplitIsHigher
   const config::TrackingProfile profile = coast_son_profile();
   Script s(profile);
   s.split_coast_son();
-  ASSERT_EQ(s.events("branch_created").size(), 1u);
+  ASSERT_EQ(s.events(TrackEventType::kBranchCreated).size(), 1u);
   const double father = s.support(1), son = s.support(2);
   EXPECT_LT(son, father);
   // WHEN at t = 7 the target's plot returns on the straight line and a false plot lies
@@ -1001,7 +1010,7 @@ TEST(BranchTracker, CoastSonReplacesTheFatherOnceItsSupportSinceTheSplitIsHigher
   // father, undecided between the two plots, takes neither), replaces it in this very look:
   // one plot decides, not the several an existence threshold would need after two misses
   EXPECT_TRUE(s.associated(2, 701));
-  EXPECT_EQ(s.events("branch_promoted"),
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted),
             (std::vector<std::string>{
                 "1: son 2 of track 1 replaces track 1: confirmed with plot 701 (rule 10)"}));
   EXPECT_GT(s.support(1), father);
@@ -1035,7 +1044,7 @@ TEST(BranchTracker, DetectabilityChainCountsMaskedMissesOnlyInAClutterArea) {
     EXPECT_FALSE(s.associated(2, 701));
     r.miss = s.support(2) - before;
     r.father = s.support(1);
-    r.events = s.events("branch_created");
+    r.events = s.events(TrackEventType::kBranchCreated);
     return r;
   };
   const double miss = std::log(1.0 - 0.9 * 0.999);  // P_D 0.9, P_G 0.999
@@ -1064,7 +1073,7 @@ TEST(BranchTracker, ConfirmedSonWaitsUntilItsSupportPassesItsFathers) {
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 150.0}});
-  ASSERT_EQ(s.events("branch_created"),
+  ASSERT_EQ(s.events(TrackEventType::kBranchCreated),
             (std::vector<std::string>{"1: son 2 of track 1 from plot 401"}));
   // WHEN its next plot lies in its gate but 150 m off where the turn it started points
   s.scan(5, {{500.0, 450.0}});
@@ -1078,7 +1087,7 @@ TEST(BranchTracker, ConfirmedSonWaitsUntilItsSupportPassesItsFathers) {
   ASSERT_NE(son, tracks.end());
   EXPECT_EQ(son->life.status, TrackStatus::kConfirmed);
   EXPECT_LT(s.support(2), s.support(1));
-  EXPECT_TRUE(s.events("branch_promoted").empty());
+  EXPECT_TRUE(s.events(TrackEventType::kBranchPromoted).empty());
   EXPECT_EQ(s.live_branches(), 1);
   // WHEN its next plot lies where it predicts
   const Gaussian g = ImmFilter::from_profile(profile, 2)->combine(son->estimate);
@@ -1087,7 +1096,7 @@ TEST(BranchTracker, ConfirmedSonWaitsUntilItsSupportPassesItsFathers) {
   const double father = s.support(1);
   s.scan(6, {next});
   // THEN its support passes the father's (which missed again) and it replaces the father
-  EXPECT_EQ(s.events("branch_promoted").size(), 1u);
+  EXPECT_EQ(s.events(TrackEventType::kBranchPromoted).size(), 1u);
   EXPECT_GT(s.support(1), father);
   EXPECT_NEAR(s.track(1)->position.x(), next.x(), 30.0);
   EXPECT_NEAR(s.track(1)->position.y(), next.y(), 30.0);
@@ -1101,17 +1110,17 @@ TEST(BranchTracker, CoastSonNotConfirmedWithinItsWindowIsPruned) {
   profile.branching.coast_son_looks = 2;
   Script s(profile);
   s.split_coast_son();
-  ASSERT_EQ(s.events("branch_created").size(), 1u);
+  ASSERT_EQ(s.events(TrackEventType::kBranchCreated).size(), 1u);
   // WHEN the target stays away (t = 7: the son's second look)
   s.scan(7, {});
   // THEN it lives through its window
   EXPECT_EQ(s.live_branches(), 1);
-  EXPECT_TRUE(s.events("branch_pruned").empty());
+  EXPECT_TRUE(s.events(TrackEventType::kBranchPruned).empty());
   // WHEN a third look passes without a plot for it
   s.scan(8, {});
   // THEN the decision falls to the father's plots: the coast son is pruned
   EXPECT_EQ(
-      s.events("branch_pruned"),
+      s.events(TrackEventType::kBranchPruned),
       (std::vector<std::string>{"1: son 2 of track 1: not confirmed within coast_son_looks (2)"}));
   EXPECT_EQ(s.live_branches(), 0);
   EXPECT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
@@ -1127,7 +1136,7 @@ TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {
   s.scan(5, {{500.0, 300.0}});
   // THEN no branch exists and no branch event is written
   for (const TrackEvent& e : s.frame.events)
-    EXPECT_EQ(e.type.rfind("branch_", 0), std::string::npos);
+    EXPECT_EQ(type_name(e).rfind("branch_", 0), std::string::npos);
   EXPECT_EQ(s.live_branches(), 0);
   EXPECT_EQ(s.report.branches, 0);
 }

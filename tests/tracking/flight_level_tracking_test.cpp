@@ -80,7 +80,7 @@ TEST(FlightLevelTracking, AReplyWithoutAltitudeAmongAltitudeRepliesKeepsOneTrack
         ++frames;
       }
     }
-    for (const TrackEvent& e : frame.events) events += e.type.rfind("branch", 0) == 0 ? 1 : 0;
+    for (const TrackEvent& e : frame.events) events += type_name(e).rfind("branch", 0) == 0 ? 1 : 0;
   }
   EXPECT_EQ(numbers.size(), 1u);
   EXPECT_GE(frames, 55);  // of 60 revolutions

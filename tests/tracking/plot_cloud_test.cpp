@@ -123,7 +123,7 @@ TEST(PlotCloud, RandomPlotsFillTheTentativeCapacityAndNoMore) {
     refused += result.report.initiations_refused;
     most_tentative = std::max(most_tentative, result.report.tentative);
     for (const TrackEvent& e : result.frame.events) {
-      overload_event |= e.type == "overload";
+      overload_event |= e.type == TrackEventType::kOverload;
       per_track_pda |= e.detail.find("too many for k-best") != std::string::npos;
     }
     for (const TrackReport& t : result.frame.tracks) {

@@ -364,8 +364,8 @@ TEST(PointTracker, FramesCarryModesCovarianceAndEvents) {
   bool initiated = false, confirmed = false;
   for (const auto& frame : run.frames) {
     for (const auto& e : frame.events) {
-      initiated = initiated || e.type == "initiated";
-      confirmed = confirmed || e.type == "confirmed";
+      initiated = initiated || e.type == TrackEventType::kInitiated;
+      confirmed = confirmed || e.type == TrackEventType::kConfirmed;
     }
   }
   EXPECT_TRUE(initiated);

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "skytrack/core/track_event.hpp"
 #include "skytrack/core/truth.hpp"
 
 namespace skytrack {
@@ -50,15 +51,6 @@ struct Association {
   std::optional<std::uint64_t> scan;
 
   bool operator==(const Association&) const = default;
-};
-
-/// A track-management decision (initiated, confirmed, branch_created, ...).
-struct TrackEvent {
-  std::string type;
-  std::int64_t track = 0;
-  std::string detail;
-
-  bool operator==(const TrackEvent&) const = default;
 };
 
 struct TrackFrame {

@@ -50,8 +50,9 @@ class Pipeline {
  public:
   static Expected<Pipeline> create(const config::TrackingProfile& profile);
 
-  /// Processes one batch; never throws, whatever the input.
-  const ScanResult& process(const PlotScan& scan);
+  /// Processes one batch; never throws, whatever the input. Bad input is a rejection in the
+  /// result; running out of memory (std::bad_alloc) terminates, by design (see process).
+  const ScanResult& process(const PlotScan& scan) noexcept;
 
   const PipelineCounters& counters() const { return counters_; }
   const config::TrackingProfile& profile() const { return profile_; }
@@ -62,7 +63,7 @@ class Pipeline {
   explicit Pipeline(const config::TrackingProfile& profile) : profile_(profile) {}
   /// Places the batch on the tracks' time (sensor_timeline.hpp): restarts its sensor's looks,
   /// or every track and look, as the placement says; false when the sensor is held.
-  bool place_on_timeline(const PlotScan& scan, bool restarted);
+  bool place_on_timeline(const PlotScan& scan, bool restarted, SensorFeed& feed);
   /// The batch itself when all its plots are usable, else a copy without the bad ones.
   const PlotScan& without_invalid_plots(const PlotScan& scan);
 

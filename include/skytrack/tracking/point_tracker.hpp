@@ -168,8 +168,8 @@ class PointTracker {
   /// (also for tracks with no candidate: empty spans, beta_miss 1).
   using OnTrack = std::function<void(int, std::span<const int>, std::span<const double>, double)>;
   void solve_clusters(const std::vector<Candidate>& pool, std::span<const int> list,
-                      double gate_probability, ScanReport& report, TrackFrame& frame,
-                      const OnTrack& on_track, bool pda_above_exact = false);
+                      double gate_probability, ScanReport& report, const OnTrack& on_track,
+                      bool pda_above_exact = false);
   /// Per-track PDA weights of a cluster (each track as if alone), for the manoeuvre kinds'
   /// clusters above association.max_exact_cluster_size: their wide gates in dense clutter
   /// chain hundreds of tracks, where k-best joint events cost seconds.
@@ -223,10 +223,11 @@ class PointTracker {
                        const PlotScan& scan) const;
   /// Time of the plot in neighbours_ nearest to `centre`.
   double nearest_time(const Eigen::Vector3d& centre) const;
-  void reject_clutter(ScanReport& report, TrackFrame& frame);
+  void reject_clutter(ScanReport& report);
   void associate_and_update(ScanReport& report, TrackFrame& frame);
+  /// reports_deletion false: the caller turns a deletion into a suspension (update_father).
   void update_track(int t, std::span<const int> candidates, std::span<const double> beta_plots,
-                    double beta_miss, TrackFrame& frame);
+                    double beta_miss, TrackFrame& frame, bool reports_deletion = true);
   /// Marks the plots a track's association holds back from initiation (held_).
   void note_explained(const std::vector<Candidate>& pool, std::span<const int> mine,
                       std::span<const double> beta);
@@ -270,14 +271,14 @@ class PointTracker {
                        std::span<const double> beta, double miss);
   /// Makes undecided the fathers whose update weighed two plots above ambiguity_beta that
   /// are no other father's likeliest plot.
-  void split_undecided_fathers(TrackFrame& frame);
+  void split_undecided_fathers();
   /// update_track for a father; a firm father its life deletes becomes doomed instead.
   void update_father(int t, std::span<const int> candidates, std::span<const double> beta_plots,
                      double beta_miss, TrackFrame& frame);
   void confirm_branch_pairs(ScanReport& report, TrackFrame& frame);
   void update_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame);
   /// Rule 10 for the undecided fathers' sons confirmed in this scan, likeliest first.
-  void promote_confirmed_sons(ScanReport& report, TrackFrame& frame);
+  void promote_confirmed_sons(ScanReport& report);
   bool of_undecided_father(std::int64_t son) const;
   void create_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame);
   /// branching.coast_sons: notes father `t`'s non-manoeuvre pair when its plot may be a false
@@ -301,28 +302,27 @@ class PointTracker {
   /// Frees a place under the caps for a branch of `father` scoring `score`; false if the new
   /// branch itself is the least likely.
   bool make_room(std::int64_t father, std::int64_t parent, double score, std::int64_t plot_id,
-                 ScanReport& report, TrackFrame& frame);
+                 ScanReport& report);
   void age_branches(ScanReport& report, TrackFrame& frame);
   /// Deletes the doomed fathers that have no branch left and may start no more sons.
-  void retire_doomed_fathers(TrackFrame& frame);
+  void retire_doomed_fathers();
   /// Collects the suspended fathers that may still branch, with their manoeuvre gates' reach.
   void find_lost_fathers(const PlotScan& scan);
   /// Room under max_children for a chain son of `father` whose existence is `existence`:
   /// displaces the least likely chain son if need be; false if there is none less likely.
   bool room_for_chain(std::int64_t father, double existence, std::int64_t plot_id,
-                      ScanReport& report, TrackFrame& frame);
+                      ScanReport& report);
   /// The suspended father in whose manoeuvre gate `plot` lies (the nearest), or -1.
   int lost_father_of(const PlotMeasurement& plot, double* nis = nullptr);
   /// §3.3 for chains that completed before their target's father was suspended: a father
   /// confirmed in this batch whose plot lies in a suspended father's manoeuvre gate
   /// replaces it under its number.
-  void continue_lost_fathers(ScanReport& report, TrackFrame& frame);
+  void continue_lost_fathers(ScanReport& report);
   /// Starts the chain as a son of `father` instead of a new father; false when the branch
   /// caps leave no room (the chain then starts a new father).
   bool start_chain_branch(int father, const Initiation& initiation, ScanReport& report,
                           TrackFrame& frame);
-  void apply(std::span<const BranchChange> changes, const std::string& reason, ScanReport& report,
-             TrackFrame& frame);
+  void apply(std::span<const BranchChange> changes, const std::string& reason, ScanReport& report);
   int slot(std::int64_t number) const;
   void report_tracks(double time, ScanReport& report, TrackFrame& frame);
   /// Gives the fathers confirmed with a provisional number their numbers, in the order of
@@ -407,6 +407,9 @@ class PointTracker {
   };
   std::vector<LostFather> lost_fathers_;
   std::vector<int> confirmed_now_;  // fathers confirmed in this batch (branching only)
+  // This batch's events, held until the batch has decided them all (process emits them
+  // into the frame): a later decision may supersede one, which then never appears.
+  std::vector<TrackEvent> events_;
   struct PendingSplit {             // a father whose update weighed two plots above ambiguity_beta
     int track = 0;
     std::vector<int> plots;
