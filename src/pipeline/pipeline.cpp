@@ -105,8 +105,12 @@ Expected<Pipeline> Pipeline::create(const config::TrackingProfile& profile) {
                       std::string(config::to_string(profile.mode)) +
                       "' is not implemented yet (only point)");
   }
-  // Build one tracker now so a bad model set fails at start, not at the first batch.
-  if (auto probe = PointTracker::create(profile, 2); !probe) return unexpected(probe.error());
+  // Build the trackers of every dimension the first batch may choose now, so a bad model set
+  // fails at start, not at the first batch (which relies on it).
+  for (const int dims : {2, 3}) {
+    if (profile.dimension != 0 && profile.dimension != dims) continue;
+    if (auto probe = PointTracker::create(profile, dims); !probe) return unexpected(probe.error());
+  }
   return Pipeline(profile);
 }
 
