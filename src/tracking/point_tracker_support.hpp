@@ -1,8 +1,10 @@
 #pragma once
 // Small helpers shared by the point tracker's translation units (not installed).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -11,9 +13,12 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
+#include "skytrack/clutter/clutter_map.hpp"
+#include "skytrack/config/profile.hpp"
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/filter/imm_filter.hpp"
 #include "skytrack/filter/state.hpp"
+#include "skytrack/measurement/plot_measurement.hpp"
 
 namespace skytrack::tracking_detail {
 
@@ -88,6 +93,50 @@ inline void add_event(std::vector<TrackEvent>& held, TrackEventType type, std::i
 /// replaces the father): they are never emitted.
 inline void supersede(std::vector<TrackEvent>& held, TrackEventType type, std::int64_t track) {
   std::erase_if(held, [&](const TrackEvent& e) { return e.type == type && e.track == track; });
+}
+
+using Clock = std::chrono::steady_clock;
+
+inline std::chrono::microseconds since(Clock::time_point start) {
+  return std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start);
+}
+
+// Association weights below this are not worth a Kalman update; below the second they are not
+// reported in the output's associations.
+inline constexpr double kNegligibleBeta = 1e-4;
+inline constexpr double kAssociationReportThreshold = 1e-3;
+// The manoeuvre kinds' probabilities only choose which branches to start, so their clusters
+// (wide gates, chained in dense clutter) get a cheaper exact attempt and fewer joint events.
+inline constexpr int kManoeuvreKBest = 10;
+inline constexpr std::int64_t kManoeuvreExactStates = std::int64_t{1} << 12;
+// Murty's k-best costs about k x tracks^2 x (tracks + plots): seconds for the clusters of
+// hundreds of tracks a flood of random plots chains together, where k joint events are a
+// vanishing share of the whole anyway. Clusters of more than this many times the exact limit
+// take per-track PDA, the bound on a batch's association work.
+inline constexpr int kKBestClusterFactor = 2;
+// A plot cloud: more than this many other plots within this many of a plot's position
+// sigmas in one look (a formation of a few aircraft is not one).
+inline constexpr int kCloudPlots = 16;
+inline constexpr double kCloudSigmas = 5.0;
+// Height spread of a track started from plots without height [m].
+inline constexpr double kUnknownHeightSigma = 3000.0;
+// Acceleration spread of a new track, where the layout has acceleration states [m/s^2].
+inline constexpr double kInitialAccelerationSigma = 10.0;
+// Sparse clutter when nothing better is known: one false plot per (10 km)^k.
+inline double sparse_clutter_density(int position_dims) {
+  return std::pow(1e-4, position_dims);
+}
+
+inline std::optional<clutter::ClutterMapCells> clutter_map_cells(
+    const config::ClutterMapSpec& map) {
+  if (!map.enabled) return std::nullopt;
+  return clutter::ClutterMapCells{
+      .range = map.range_cell, .azimuth = map.azimuth_cell, .cartesian = map.cartesian_cell};
+}
+
+/// True when the plot measures height (elevation, z or altitude).
+inline bool measures_height(const PlotMeasurement& plot) {
+  return plot.model.position_components == 3;
 }
 
 }  // namespace skytrack::tracking_detail

@@ -15,7 +15,10 @@
 // carry hidden sons and grandsons: a second, wider manoeuvre gate per track, pairs of five
 // kinds with their own JPDA probabilities, their ordered confirmation
 // (tracking/branch_association.hpp) and the tree rules (tracking/branch_tree.hpp), in
-// point_tracker_branches.cpp. With branching off the tracker is plain IMM-JPDA.
+// point_tracker_branch*.cpp and point_tracker_lost_fathers.cpp. With branching off the tracker
+// is plain IMM-JPDA. The plain tracker's parts: point_tracker.cpp (creation, a look's steps,
+// measurements), _gating, _association (clutter density, JPDA, IMM-PDA update), _initiation,
+// _report and _looks (search regions, numbering).
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -238,7 +241,7 @@ class PointTracker {
   void find_plot_clouds();
   void initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame);
 
-  // Branch tracking (point_tracker_branches.cpp).
+  // Branch tracking (point_tracker_branch*.cpp, point_tracker_lost_fathers.cpp).
   bool branching() const { return manoeuvre_.has_value(); }
   ImmEstimate manoeuvre_prediction(const ImmEstimate& estimate, double time) const;
   void associate_branches(const PlotScan& scan, ScanReport& report, TrackFrame& frame);
@@ -410,7 +413,7 @@ class PointTracker {
   // This batch's events, held until the batch has decided them all (process emits them
   // into the frame): a later decision may supersede one, which then never appears.
   std::vector<TrackEvent> events_;
-  struct PendingSplit {             // a father whose update weighed two plots above ambiguity_beta
+  struct PendingSplit {  // a father whose update weighed two plots above ambiguity_beta
     int track = 0;
     std::vector<int> plots;
     std::vector<double> beta;
