@@ -27,45 +27,6 @@ namespace skytrack::daemon {
 
 using Clock = std::chrono::steady_clock;
 
-Expected<config::TrackingProfile> load_tracking_profile(const std::string& path) {
-  if (path.empty()) {
-    config::TrackingProfile profile;
-    profile.identity = {"default", "1", "built-in default point-tracking profile"};
-    return profile;
-  }
-  return config::load_profile(path);
-}
-
-std::string restart_reason(const config::TrackingProfile& a, const config::TrackingProfile& b) {
-  // The decision compares the whole profile, so a section added later cannot be forgotten;
-  // only the identity and the input limits (which the running pipeline takes) are left out.
-  const auto tracking = [](config::TrackingProfile p) {
-    p.identity = {};
-    p.input_limits = {};
-    return p;
-  };
-  if (tracking(a) == tracking(b)) return {};
-  std::string out;
-  const auto differs = [&out](bool same, const char* section) {
-    if (!same) out += (out.empty() ? "" : ", ") + std::string(section);
-  };
-  differs(a.mode == b.mode, "mode");
-  differs(a.dimension == b.dimension, "dimension");
-  differs(a.measurement == b.measurement, "measurement");
-  differs(a.antenna == b.antenna, "antenna");
-  differs(a.motion_models == b.motion_models, "motion_models");
-  differs(a.mode_transition == b.mode_transition, "mode_transition");
-  differs(a.mode_transition_interval == b.mode_transition_interval, "mode_transition_interval");
-  differs(a.initial_mode_probabilities == b.initial_mode_probabilities,
-          "initial_mode_probabilities");
-  differs(a.association == b.association, "association");
-  differs(a.clutter_rejection == b.clutter_rejection, "clutter_rejection");
-  differs(a.initiation == b.initiation, "initiation");
-  differs(a.track_life == b.track_life, "track_life");
-  differs(a.branching == b.branching, "branching");
-  return out.empty() ? "tracking parameters" : out;
-}
-
 struct Daemon::Impl {
   Impl(const DaemonConfig& c, config::TrackingProfile p, Pipeline pipe, DdsSession s)
       : config(c),
@@ -129,7 +90,7 @@ struct Daemon::Impl {
   RateLimiter bad_scan_log;    // tracking thread
   RateLimiter write_log;
   RateLimiter capacity_log;  // tracking thread
-  RateLimiter asterix_log;  // UDP input thread
+  RateLimiter asterix_log;   // UDP input thread
 };
 
 void Daemon::Impl::receive_loop() {
