@@ -34,6 +34,14 @@ PlotScan clean_batch(std::uint64_t k, std::uint32_t sensor = 1) {
   return scan;
 }
 
+/// Sensor 2's empty batch k on sensor 1's clock, covering a sector away from the targets.
+PlotScan other(std::uint64_t k) {
+  PlotScan scan = clean_batch(k, 2);
+  scan.plots.clear();
+  scan.coverage = AzimuthSector{2.5, 3.0};
+  return scan;
+}
+
 std::vector<TrackFrame> frames_of(Pipeline& pipeline, const std::vector<PlotScan>& batches) {
   std::vector<TrackFrame> frames;
   for (const PlotScan& b : batches) {
@@ -169,12 +177,6 @@ TEST(InputLimits, AnotherSensorsCorruptTimeLeavesASensorsTracksUnchanged) {
   auto reference = Pipeline::create(profile);
   auto tested = Pipeline::create(profile);
   ASSERT_TRUE(reference && tested);
-  const auto other = [](std::uint64_t k) {
-    PlotScan scan = clean_batch(k, 2);
-    scan.plots.clear();
-    scan.coverage = AzimuthSector{2.5, 3.0};
-    return scan;
-  };
   PlotScan corrupt = other(0);
   corrupt.time += kFiftyYears;
   ASSERT_TRUE(tested->process(corrupt).accepted);  // a first batch: nothing to compare with
@@ -198,12 +200,6 @@ TEST(InputLimits, AnotherSensorsHijackedClockNeitherWipesNorMovesTheTracks) {
   auto reference = Pipeline::create(profile);
   auto tested = Pipeline::create(profile);
   ASSERT_TRUE(reference && tested);
-  const auto other = [](std::uint64_t k) {
-    PlotScan scan = clean_batch(k, 2);
-    scan.plots.clear();
-    scan.coverage = AzimuthSector{2.5, 3.0};
-    return scan;
-  };
   std::size_t held = 0;
   for (std::uint64_t k = 0; k < 24; ++k) {
     const TrackFrame expected = reference->process(clean_batch(k)).frame;
