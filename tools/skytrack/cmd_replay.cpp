@@ -167,6 +167,10 @@ bool Replayer::pass(double time_offset, std::uint64_t scan_offset) {
   }
   progress.finish();
   lines_rejected_ += source.rejected();
+  if (const auto error = source.read_error()) {  // not the end of the recording
+    fmt::print(stderr, "skytrack replay: {}\n", *error);
+    return false;
+  }
   return true;
 }
 

@@ -16,6 +16,7 @@ class PlotStreamSource final : public ScanSource {
   std::size_t bytes_read() const override { return reader_.bytes_read(); }
   std::size_t file_size() const override { return reader_.file_size(); }
   std::size_t rejected() const override { return reader_.counts().rejected_lines; }
+  std::optional<std::string> read_error() const override { return reader_.read_error(); }
 
  private:
   io::PlotStreamReader reader_;

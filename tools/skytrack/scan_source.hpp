@@ -20,6 +20,8 @@ class ScanSource {
   virtual std::size_t file_size() const = 0;
   /// Lines (JSON Lines) or records and datagrams (ASTERIX) rejected so far.
   virtual std::size_t rejected() const = 0;
+  /// Why reading stopped before the end of the input (a read error), if it did.
+  virtual std::optional<std::string> read_error() const { return std::nullopt; }
 };
 
 /// A plot stream; bad lines are printed (the first 20) and counted.
