@@ -33,14 +33,7 @@ struct PointGnn {
 };
 using kModes = ::testing::Types<PointBranching, PointPlainJpda, PointGnn>;
 
-Plot cartesian(std::int64_t id, double x, double y) {
-  Plot p;
-  p.id = id;
-  p.form = PlotForm::kCartesian;
-  p.x = x;
-  p.y = y;
-  return p;
-}
+using testing::cartesian;
 
 /// Three targets and a little clutter, seen every 4 s.
 std::vector<PlotScan> stream(int batches, std::uint64_t seed) {

@@ -12,14 +12,7 @@ namespace {
 
 constexpr double kFiftyYears = 50.0 * 365.25 * 86400.0;
 
-Plot cartesian(std::int64_t id, double x, double y) {
-  Plot p;
-  p.id = id;
-  p.form = PlotForm::kCartesian;
-  p.x = x;
-  p.y = y;
-  return p;
-}
+using testing::cartesian;
 
 /// Two targets seen by sensor 1 every 4 s, as Cartesian plots.
 PlotScan clean_batch(std::uint64_t k, std::uint32_t sensor = 1) {

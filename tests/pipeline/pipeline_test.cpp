@@ -23,14 +23,7 @@ PlotScan batch(std::uint64_t number, double time, std::vector<Plot> plots) {
   return scan;
 }
 
-Plot cartesian(std::int64_t id, double x, double y) {
-  Plot p;
-  p.id = id;
-  p.form = PlotForm::kCartesian;
-  p.x = x;
-  p.y = y;
-  return p;
-}
+using testing::cartesian;
 
 TEST(Pipeline, RejectsOutOfOrderAndDuplicateBatchesAndCountsThem) {
   auto pipeline = Pipeline::create(testing::test_profile());

@@ -15,6 +15,16 @@ struct TrackedRun {
   metrics::EvaluationSummary summary;
 };
 
+/// A Cartesian plot at (x, y) [m].
+inline Plot cartesian(std::int64_t id, double x, double y) {
+  Plot p;
+  p.id = id;
+  p.form = PlotForm::kCartesian;
+  p.x = x;
+  p.y = y;
+  return p;
+}
+
 inline config::TrackingProfile test_profile() {
   config::TrackingProfile profile;
   profile.identity = {"test", "1", ""};
