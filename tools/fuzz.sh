@@ -21,6 +21,9 @@ case $target in
   *) echo "unknown target '$target'" >&2; exit 2 ;;
 esac
 
+"$root/tools/install-deps.sh"
+"$root/tools/install-clang.sh"
+
 launcher=()
 command -v ccache >/dev/null &&
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)

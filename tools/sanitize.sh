@@ -11,19 +11,7 @@ build_dir=${SKYTRACK_BUILD_DIR:-$root/build-sanitize}
 jobs=${JOBS:-2}
 "$root/tools/install-deps.sh"
 
-# clang and its sanitizer runtimes, only this job needs them (Debian 12: clang 14).
-missing=()
-for p in clang libclang-rt-14-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  sudo_cmd=()
-  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
-  echo "installing: ${missing[*]}"
-  "${sudo_cmd[@]}" apt-get update -qq
-  "${sudo_cmd[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-    --no-install-recommends "${missing[@]}" >/dev/null
-fi
+"$root/tools/install-clang.sh"
 
 launcher=()
 command -v ccache >/dev/null &&
