@@ -90,8 +90,8 @@ void run_batches(benchmark::State& state, bool dense_clutter_rules, bool branchi
     plots += batches[next].plots.size();
     tracks = result.frame.tracks.size();
     const skytrack::ScanReport& r = result.report;
-    largest_cluster = std::max(largest_cluster, static_cast<double>(r.largest_cluster));
-    approximated += r.approximated_clusters;
+    largest_cluster = std::max(largest_cluster, static_cast<double>(r.point.largest_cluster));
+    approximated += r.point.approximated_clusters;
     gate_ms += r.predict.count() / 1000.0;
     associate_ms += r.associate.count() / 1000.0;
     manage_ms += r.manage.count() / 1000.0;

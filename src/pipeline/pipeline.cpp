@@ -100,16 +100,13 @@ std::optional<std::string> dimension_refusal(const config::TrackingProfile& prof
 }
 
 Expected<Pipeline> Pipeline::create(const config::TrackingProfile& profile) {
-  if (profile.mode != config::TrackingMode::kPoint) {
-    return make_error("profile '" + profile.identity.name + "': mode '" +
-                      std::string(config::to_string(profile.mode)) +
-                      "' is not implemented yet (only point)");
-  }
-  // Build the trackers of every dimension the first batch may choose now, so a bad model set
-  // fails at start, not at the first batch (which relies on it).
+  // Build the stages of every dimension the first batch may choose now, so a bad model set
+  // or mode fails at start, not at the first batch (which relies on it).
   for (const int dims : {2, 3}) {
     if (profile.dimension != 0 && profile.dimension != dims) continue;
-    if (auto probe = PointTracker::create(profile, dims); !probe) return unexpected(probe.error());
+    if (auto probe = EstimatorStages::create(profile, dims); !probe) {
+      return unexpected(probe.error());
+    }
   }
   return Pipeline(profile);
 }
@@ -123,7 +120,7 @@ bool Pipeline::place_on_timeline(const PlotScan& scan, bool restarted, SensorFee
   if (placement == kNewTimeline) {
     // No track's time compares with this sensor's batches.
     result_.tracks_restarted = true;
-    tracker_.reset();
+    stages_.reset();
     for (auto& [id, state] : sensors_) state.feed = SensorFeed(profile_.antenna);
   }
   return true;
@@ -190,12 +187,12 @@ const ScanResult& Pipeline::process(const PlotScan& scan) noexcept {
   }
   if (!place_on_timeline(scan, verdict.restarted, sensor.feed)) {
     reject(batch_reason::kClockDisagrees);
-    result_.rejection += " (t = " + std::to_string(scan.time) + " s; the tracks' time: " +
-                         std::to_string(*timeline_.time()) + " s)";
+    result_.rejection += " (t = " + std::to_string(scan.time) +
+                         " s; the tracks' time: " + std::to_string(*timeline_.time()) + " s)";
     return result_;
   }
   const PlotScan& usable = without_invalid_plots(scan);
-  if (!tracker_) {
+  if (!stages_) {
     // The first batch with plots sets the dimension (an empty one says nothing of it).
     if (auto refusal = dimension_refusal(profile_, usable)) {
       ++counters_.scans_rejected;
@@ -205,11 +202,11 @@ const ScanResult& Pipeline::process(const PlotScan& scan) noexcept {
       return result_;
     }
     if (!usable.plots.empty()) {
-      tracker_.emplace(*PointTracker::create(profile_, tracker_dimension(profile_, usable)));
+      stages_.emplace(*EstimatorStages::create(profile_, tracker_dimension(profile_, usable)));
     }
   }
-  if (tracker_) {
-    sensor.feed.feed(usable, *tracker_, result_.frame, result_.report);
+  if (stages_) {
+    sensor.feed.feed(usable, *stages_, result_.frame, result_.report);
     timeline_.fed(scan.sensor, scan.time);
   } else {
     result_.frame = TrackFrame{};

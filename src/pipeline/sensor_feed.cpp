@@ -14,36 +14,11 @@ namespace {
 constexpr std::size_t kMaxWaiting = 64;
 constexpr double kMaxWaitTime = 5.0;  // [s]
 
-/// Adds a later look's counts to a batch's report; the track counts are the later look's.
-void add_look(ScanReport& total, const ScanReport& look) {
-  total.plots += look.plots;
-  total.plots_invalid += look.plots_invalid;
-  total.plots_rejected_clutter += look.plots_rejected_clutter;
-  total.plots_in_clouds += look.plots_in_clouds;
-  total.tentative = look.tentative;
-  total.confirmed = look.confirmed;
-  total.coasting = look.coasting;
-  total.initiated += look.initiated;
-  total.initiations_refused += look.initiations_refused;
-  total.deleted += look.deleted;
-  total.clusters += look.clusters;
-  total.largest_cluster = std::max(total.largest_cluster, look.largest_cluster);
-  total.approximated_clusters += look.approximated_clusters;
-  total.numeric_failures += look.numeric_failures;
-  total.branches = look.branches;
-  total.branches_created += look.branches_created;
-  total.branches_promoted += look.branches_promoted;
-  total.branches_pruned += look.branches_pruned;
-  total.predict += look.predict;
-  total.associate += look.associate;
-  total.manage += look.manage;
-}
-
 }  // namespace
 
-void SensorFeed::look(const PlotScan& scan, const LookSources* sources, PointTracker& tracker) {
+void SensorFeed::look(const PlotScan& scan, const LookSources* sources, EstimatorStages& tracker) {
   if (!looked_) {
-    tracker.process(scan, *frame_, *report_, sources);
+    tracker.process(scan, sources, *frame_, *report_);
     looked_ = true;
     return;
   }
@@ -51,7 +26,7 @@ void SensorFeed::look(const PlotScan& scan, const LookSources* sources, PointTra
   // earlier batches named by their batch), the tracks after the last, and the tracks deleted
   // on the way.
   ScanReport next;
-  tracker.process(scan, look_frame_, next, sources);
+  tracker.process(scan, sources, look_frame_, next);
   for (TrackReport& track : frame_->tracks) {
     if (track.status == TrackStatus::kDeleted) look_frame_.tracks.push_back(std::move(track));
   }
@@ -61,10 +36,10 @@ void SensorFeed::look(const PlotScan& scan, const LookSources* sources, PointTra
     frame_->associations.push_back(a);
   }
   frame_->events.insert(frame_->events.end(), look_frame_.events.begin(), look_frame_.events.end());
-  add_look(*report_, next);
+  report_->add_later_look(next);
 }
 
-void SensorFeed::snapshot(const PlotScan& scan, PointTracker& tracker) {
+void SensorFeed::snapshot(const PlotScan& scan, EstimatorStages& tracker) {
   clock_ += 2.0 * std::numbers::pi;
   own_.assign(scan.plots.size(), -1);
   sweeps_.assign(scan.plots.size(), clock_);
@@ -72,7 +47,7 @@ void SensorFeed::snapshot(const PlotScan& scan, PointTracker& tracker) {
   look(scan, &sources, tracker);
 }
 
-void SensorFeed::feed(const PlotScan& batch, PointTracker& tracker, TrackFrame& frame,
+void SensorFeed::feed(const PlotScan& batch, EstimatorStages& tracker, TrackFrame& frame,
                       ScanReport& report) {
   frame_ = &frame;
   report_ = &report;
@@ -108,7 +83,7 @@ void SensorFeed::feed(const PlotScan& batch, PointTracker& tracker, TrackFrame& 
   frame.time = batch.time;
 }
 
-void SensorFeed::feed_rotating(const PlotScan& batch, PointTracker& tracker) {
+void SensorFeed::feed_rotating(const PlotScan& batch, EstimatorStages& tracker) {
   antenna_.place(batch, clock_, sweeps_);
   // How far the beam is known to have swept: to the latest plot, to the batch's time when
   // that is later (a batch stamped when its sweep ended), to the end of its coverage.

@@ -100,8 +100,6 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout l
       manoeuvre_(std::move(manoeuvre)),
       hold_(std::move(hold)),
       initiator_(profile.initiation, layout.dims),
-      clutter_(profile.clutter_rejection),
-      density_(clutter_map_cells(profile.association.clutter_map)),
       jpda_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
                         .k_best = profile.association.k_best}),
       jpda_manoeuvre_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
@@ -134,21 +132,25 @@ void PointTracker::start_frame(const PlotScan& scan, TrackFrame& frame) const {
   frame.events.clear();
 }
 
-void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& report,
-                           const LookSources* sources) {
+void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame& frame,
+                           ScanReport& report) {
   start_frame(scan, frame);
   events_.clear();
   ++batches_;
+  pre_ = &pre;
 
   auto start = Clock::now();
-  make_measurements(scan, sources, report);
+  const std::size_t n = pre.plots().size();
+  gated_.assign(n, 0);
+  used_by_branch_.assign(n, 0);
+  held_.assign(n, 0);
   double t_min = scan.time, t_max = scan.time;
-  for (const PlotMeasurement& p : plots_) {
+  for (const PlotMeasurement& p : pre.plots()) {
     t_min = std::min(t_min, p.time);
     t_max = std::max(t_max, p.time);
   }
   gate(scan, 0.5 * (t_min + t_max), 0.5 * (t_max - t_min));
-  report.predict = since(start);
+  report.predict += since(start);
 
   start = Clock::now();
   reject_clutter(report);
@@ -170,16 +172,13 @@ void PointTracker::process(const PlotScan& scan, TrackFrame& frame, ScanReport& 
   // The tracks this look saw (aged or updated, or started or branched in it).
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
     if (t >= covered_.size() || covered_[t] != 0 || took_candidates_[t] != 0) {
-      tracks_[t].set_looked(sensor_, look_sweep_);
+      tracks_[t].set_looked(pre.sensor(), pre.sweep());
     }
   }
   report_tracks(scan.time, report, frame);
   report.numeric_failures += std::exchange(numeric_failures_, 0);
-  if (windowed_) {
-    boxed_.resize(plots_.size());
-    for (std::size_t j = 0; j < plots_.size(); ++j) boxed_[j] = rejected_[j] || crowd_[j] ? 0 : 1;
-    density_.remember(sensor_, plots_, rejected_, boxed_, clutter_counted_);
-  }
+  pre.finish();
+  pre_ = nullptr;
   report.manage = since(start);
 }
 
@@ -187,38 +186,6 @@ void PointTracker::report_only(const PlotScan& scan, TrackFrame& frame, ScanRepo
   start_frame(scan, frame);
   report.plots = static_cast<int>(scan.plots.size());
   report_tracks(scan.time, report, frame);
-}
-
-void PointTracker::make_measurements(const PlotScan& scan, const LookSources* sources,
-                                     ScanReport& report) {
-  plots_.clear();
-  positions_.clear();
-  report.plots = static_cast<int>(scan.plots.size());
-  sensor_ = scan.sensor;
-  windowed_ = sources != nullptr && !profile_.association.clutter_density;
-  clutter_counted_.assign(scan.plots.size(), 0);
-  // A snapshot look is one revolution's worth of sweep after the last.
-  const double snapshot_sweep = 2.0 * std::numbers::pi * static_cast<double>(batches_);
-  look_sweep_ = sources != nullptr ? sources->sweep_to : snapshot_sweep;
-  for (std::size_t i = 0; i < scan.plots.size(); ++i) {
-    const int from = sources != nullptr ? sources->batch_of[i] : -1;
-    const PlotScan& header = from >= 0 ? sources->batches[static_cast<std::size_t>(from)] : scan;
-    auto measurement = measurement_from_plot(scan.plots[i], header,
-                                             profile_.measurement.default_sigma, layout_.dims);
-    if (!measurement) {
-      ++report.plots_invalid;
-      continue;
-    }
-    measurement->sensor = scan.sensor;
-    measurement->scan = header.scan;
-    measurement->sweep = sources != nullptr ? sources->sweep[i] : snapshot_sweep;
-    positions_.push_back(approximate_position(*measurement));
-    plots_.push_back(std::move(*measurement));
-  }
-  rejected_.assign(plots_.size(), 0);
-  gated_.assign(plots_.size(), 0);
-  used_by_branch_.assign(plots_.size(), 0);
-  held_.assign(plots_.size(), 0);
 }
 
 double PointTracker::plot_spread_at(const Eigen::Vector3d& position, const PlotScan& scan) const {

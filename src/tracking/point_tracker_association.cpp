@@ -20,22 +20,22 @@ namespace skytrack {
 using namespace tracking_detail;
 
 void PointTracker::reject_clutter(ScanReport& report) {
-  if (!profile_.clutter_rejection.enabled || plots_.empty()) return;
+  if (!pre_->rejects_clutter() || pre_->plots().empty()) return;
   // Plots in the gate of a confirmed track are kept whatever their density.
-  std::vector<std::uint8_t> protect(plots_.size(), 0);
+  std::vector<std::uint8_t> protect(pre_->plots().size(), 0);
   for (const Candidate& c : candidates_) {
     const TrackStatus status = tracks_[c.track].life.status;
     if (status == TrackStatus::kConfirmed || status == TrackStatus::kCoasting) {
       protect[c.plot] = 1;
     }
   }
-  const clutter::ClutterRejectionResult& result = clutter_.apply(positions_, layout_.dims, protect);
-  for (std::size_t j = 0; j < plots_.size(); ++j) rejected_[j] = result.keep[j] ? 0 : 1;
-  std::erase_if(candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
-  std::erase_if(manoeuvre_candidates_, [&](const Candidate& c) { return rejected_[c.plot] != 0; });
+  const clutter::ClutterRejectionResult& result = pre_->reject_clutter(protect);
+  std::erase_if(candidates_, [&](const Candidate& c) { return pre_->rejected(c.plot); });
+  std::erase_if(manoeuvre_candidates_, [&](const Candidate& c) { return pre_->rejected(c.plot); });
   report.plots_rejected_clutter = result.rejected;
-  add_event(events_, TrackEventType::kClutterRejected, 0,
-            std::to_string(result.rejected) + " of " + std::to_string(plots_.size()) + " plots");
+  add_event(
+      events_, TrackEventType::kClutterRejected, 0,
+      std::to_string(result.rejected) + " of " + std::to_string(pre_->plots().size()) + " plots");
 }
 
 void PointTracker::associate_and_update(ScanReport& report, TrackFrame& frame) {
@@ -76,8 +76,8 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
   // Candidates are grouped by track (they were made track by track) and clustered.
   pairs_.clear();
   for (const int k : list) pairs_.push_back({pool[k].track, pool[k].plot});
-  const std::span<const Cluster> clusters =
-      clusters_.build(static_cast<int>(tracks_.size()), static_cast<int>(plots_.size()), pairs_);
+  const std::span<const Cluster> clusters = clusters_.build(
+      static_cast<int>(tracks_.size()), static_cast<int>(pre_->plots().size()), pairs_);
   std::vector<int> first(tracks_.size() + 1, 0);  // range of `list` per track
   for (const int k : list) ++first[pool[k].track + 1];
   for (std::size_t t = 0; t < tracks_.size(); ++t) first[t + 1] += first[t];
@@ -91,8 +91,9 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
       for (const int t : cluster.tracks) on_track(t, {}, {}, 1.0);
       continue;
     }
-    ++report.clusters;
-    report.largest_cluster = std::max(report.largest_cluster, static_cast<int>(n_tracks));
+    ++report.point.clusters;
+    report.point.largest_cluster =
+        std::max(report.point.largest_cluster, static_cast<int>(n_tracks));
     // Each plot's likelihood ratio against clutter in its own measurement space.
     JpdaProblem problem;
     problem.likelihood = Eigen::MatrixXd::Zero(n_tracks, n_plots);
@@ -106,7 +107,7 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
       for (int k = first[t]; k < first[t + 1]; ++k) {
         const Candidate& c = pool[list[k]];
         problem.likelihood(ti, column(c.plot)) =
-            pd * c.likelihood / clutter_density(plots_[c.plot], c.plot);
+            pd * c.likelihood / pre_->density(pre_->plots()[c.plot], c.plot);
       }
     }
     const bool gnn = profile_.association.method == config::AssociationMethod::kGnn;
@@ -119,13 +120,13 @@ void PointTracker::solve_clusters(const std::vector<Candidate>& pool, std::span<
                    : (pda_above_exact ? jpda_manoeuvre_ : jpda_).solve(problem));
     numeric_failures_ += result.status != JpdaStatus::kOk;
     if (pda) {
-      ++report.approximated_clusters;
+      ++report.point.approximated_clusters;
       add_event(events_, TrackEventType::kJpdaApproximated, 0,
                 std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +
                     (pda_above_exact ? "manoeuvre gates" : "too many for k-best") +
                     ": PDA per track");
     } else if (result.approximated) {
-      ++report.approximated_clusters;
+      ++report.point.approximated_clusters;
       add_event(events_, TrackEventType::kJpdaApproximated, 0,
                 std::to_string(n_tracks) + " tracks, " + std::to_string(n_plots) + " plots, " +
                     std::to_string(profile_.association.k_best) + " best joint events");
@@ -200,7 +201,7 @@ PointTracker::PlotRatios PointTracker::soft_update(int t, std::vector<Candidate>
   double density = 0.0, kept = beta_miss;
   for (std::size_t k = 0; k < candidates.size(); ++k) {
     Candidate& c = pool[candidates[k]];
-    const double plot_density = clutter_density(plots_[c.plot], c.plot);
+    const double plot_density = pre_->density(pre_->plots()[c.plot], c.plot);
     density += plot_density / static_cast<double>(candidates.size());
     if (c.hypothesis.usable) {
       const double ratio = c.hypothesis.likelihood / plot_density;
@@ -208,7 +209,8 @@ PointTracker::PlotRatios PointTracker::soft_update(int t, std::vector<Candidate>
       ratios.best = std::max(ratios.best, ratio);
     }
     if (beta_plots[k] >= kAssociationReportThreshold) {
-      add_association(frame, number, plots_[c.plot].plot_id, plots_[c.plot].scan, beta_plots[k]);
+      add_association(frame, number, pre_->plots()[c.plot].plot_id, pre_->plots()[c.plot].scan,
+                      beta_plots[k]);
     }
     if (beta_plots[k] < kNegligibleBeta) continue;
     hypotheses_.push_back(std::move(c.hypothesis));
@@ -224,34 +226,13 @@ PointTracker::PlotRatios PointTracker::soft_update(int t, std::vector<Candidate>
   return ratios;
 }
 
-double PointTracker::clutter_density(const PlotMeasurement& plot, int index) const {
-  // Clutter density in the plot's measurement space: this batch's estimate, or the profile's
-  // value (per m^k in the tracking frame) times the polar volume element.
-  if (index >= 0 && auto_density_[static_cast<std::size_t>(index)] > 0.0) {
-    return auto_density_[static_cast<std::size_t>(index)];
-  }
-  const MeasurementModel& m = plot.model;
-  double density =
-      profile_.association.clutter_density.value_or(sparse_clutter_density(m.position_components));
-  density *= m.volume_element(plot.z);
-  if (m.has_range_rate) density /= 2.0 * profile_.initiation.max_speed;
-  return density;
-}
-
 void PointTracker::estimate_clutter_density() {
-  auto_density_.assign(plots_.size(), 0.0);
-  if (profile_.association.clutter_density) return;
   // The clutter map counts the plots no firm track gates: those are the false plots.
-  clutter_counted_.assign(plots_.size(), 0);
-  if (profile_.association.clutter_map.enabled) {
-    for (std::size_t j = 0; j < plots_.size(); ++j) clutter_counted_[j] = rejected_[j] ? 0 : 1;
-    for (const Candidate& c : candidates_) {
-      if (is_reported_as_firm(tracks_[c.track].life.status)) clutter_counted_[c.plot] = 0;
-    }
+  false_plots_.assign(pre_->plots().size(), 1);
+  for (const Candidate& c : candidates_) {
+    if (is_reported_as_firm(tracks_[c.track].life.status)) false_plots_[c.plot] = 0;
   }
-  boxed_.resize(plots_.size());
-  for (std::size_t j = 0; j < plots_.size(); ++j) boxed_[j] = rejected_[j] || crowd_[j] ? 0 : 1;
-  density_.estimate(sensor_, windowed_, plots_, boxed_, clutter_counted_, auto_density_);
+  pre_->estimate_density(false_plots_);
 }
 
 }  // namespace skytrack

@@ -30,12 +30,12 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   const double likelihood_ratio = ratios.sum;
   add_support(branch.life, ratios, t);
   branch.quality = 0.8 * branch.quality + 0.2 * (1.0 - u.miss);
-  branch.last_plot = plots_[pair.plot];
+  branch.last_plot = pre_->plots()[pair.plot];
   branch.last_plot_batch = batches_;
   branch.score += log_of(pair.probability);
   touched_[static_cast<std::size_t>(t)] = 1;
   used_by_branch_[pair.plot] = 1;
-  const std::string plot = std::to_string(plots_[pair.plot].plot_id);
+  const std::string plot = std::to_string(pre_->plots()[pair.plot].plot_id);
   if (branch.branch == BranchType::kFather) {  // made independent earlier in this batch
     update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
                      profile_.association.gate_probability, profile_.track_life);
@@ -78,7 +78,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
     return;
   }
   if (confirmed && non_manoeuvre && of_undecided_father(number)) {  // see promote_confirmed_sons
-    confirmed_sons_.push_back({t, pair_likelihood, plots_[pair.plot].plot_id});
+    confirmed_sons_.push_back({t, pair_likelihood, pre_->plots()[pair.plot].plot_id});
     return;
   }
   // Confirmed, it replaces the father once its support passes the father's: a son from
@@ -101,7 +101,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   // A son starts at its father's latest update (rule 6), a grandson at its son's first plot
   // (rule 7): plot-to-plot manoeuvre starts (§3.3).
   const std::optional<PlotMeasurement>& start = of_father ? parent.last_plot : parent.first_plot;
-  const PlotMeasurement& plot = plots_[pair.plot];
+  const PlotMeasurement& plot = pre_->plots()[pair.plot];
   if (!start || !(plot.time > start->time)) return;
   const std::int64_t parent_id = parent.id;
   const BranchType parent_type = parent.branch;
@@ -139,7 +139,7 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   add_event(events_, TrackEventType::kBranchCreated, father,
             name(branch.branch, branch.id) + " of " + name(parent_type, parent_id) + " from plot " +
                 std::to_string(plot.plot_id));
-  ++report.branches_created;
+  ++report.point.branches_created;
   slots_[branch.id] = static_cast<int>(tracks_.size());
   tracks_.push_back(std::move(branch));
   touched_.push_back(1);
@@ -163,7 +163,7 @@ ImmEstimate PointTracker::son_start(int father, const PlotMeasurement& plot) con
   const double one = 1.0;
   return counted(filter_.update(start, std::span(&h, 1), std::span(&one, 1), 0.0,
                                 profile_.association.detection_probability,
-                                profile_.association.gate_probability, clutter_density(plot, -1)));
+                                profile_.association.gate_probability, pre_->density(plot, -1)));
 }
 
 bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double score,
@@ -192,7 +192,7 @@ bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double sc
       add_event(
           events_, TrackEventType::kBranchPruned, father,
           "branch from plot " + std::to_string(plot_id) + " not created: least likely at " + where);
-      ++report.branches_pruned;
+      ++report.point.branches_pruned;
       return false;
     }
     changes_.clear();

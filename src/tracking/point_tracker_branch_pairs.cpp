@@ -46,12 +46,12 @@ void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) 
   }
   const auto [centre, radius] = manoeuvre_reach(prior, scan, &mode_reach_);
   if (covered_[t] == 0 && !covers_region(scan, centre, radius)) return;
-  index_.within(centre, radius, neighbours_);
+  pre_->index().within(centre, radius, neighbours_);
   // The models' regions can lie far apart (turns either way): only plots inside one of them
   // are worth an innovation.
   std::erase_if(neighbours_, [&](int j) {
     return std::none_of(mode_reach_.begin(), mode_reach_.end(), [&](const Sphere& m) {
-      return (positions_[j] - m.centre).squaredNorm() <= m.radius * m.radius;
+      return (pre_->positions()[j] - m.centre).squaredNorm() <= m.radius * m.radius;
     });
   });
   if (neighbours_.empty()) return;
@@ -59,12 +59,12 @@ void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) 
   const ImmEstimate predicted = manoeuvre_prediction(prior, time);
   if (for_update) predicted_[t] = filter_.predict(track.estimate, time);
   for (const int j : neighbours_) {
-    const PlotHypothesis m = manoeuvre_->hypothesise(predicted, plots_[j]);
-    if (!m.usable || m.min_nis > manoeuvre_threshold_[plots_[j].model.size()]) continue;
+    const PlotHypothesis m = manoeuvre_->hypothesise(predicted, pre_->plots()[j]);
+    if (!m.usable || m.min_nis > manoeuvre_threshold_[pre_->plots()[j].model.size()]) continue;
     // Only an updating pair needs the plot against the track's own IMM prediction.
     PlotHypothesis hypothesis;
     if (for_update) {
-      hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
+      hypothesis = filter_.hypothesise(predicted_[t], pre_->plots()[j]);
       if (!hypothesis.usable) continue;
     }
     manoeuvre_candidates_.push_back({t, j, std::move(hypothesis), m.likelihood});
@@ -141,7 +141,7 @@ void PointTracker::update_father(int t, std::span<const int> candidates,
 
 void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
   const std::vector<BranchPair> confirmed = confirm_pairs(
-      branch_pairs_, static_cast<int>(tracks_.size()), static_cast<int>(plots_.size()));
+      branch_pairs_, static_cast<int>(tracks_.size()), static_cast<int>(pre_->plots().size()));
   bool sons_marked = false, sons_promoted = false;
   confirmed_sons_.clear();
   for (const BranchPair& pair : confirmed) {
@@ -167,14 +167,14 @@ void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
     switch (pair.kind) {
       case PairKind::kFatherNonManoeuvre: {  // §2.3 (1), rule 5
         PointTrack& father = tracks_[pair.track];
-        father.last_plot = plots_[pair.plot];
+        father.last_plot = pre_->plots()[pair.plot];
         father.last_plot_batch = batches_;
         used_by_branch_[pair.plot] = 1;
         changes_.clear();
         tree_.release_branches(father.id, changes_);
         apply(changes_,
               name(BranchType::kFather, father.id) + " took plot " +
-                  std::to_string(plots_[pair.plot].plot_id) + " (rule 5)",
+                  std::to_string(pre_->plots()[pair.plot].plot_id) + " (rule 5)",
               report);
         note_doubtful_update(pair);
         break;
@@ -199,12 +199,12 @@ void PointTracker::note_doubtful_update(const BranchPair& pair) {
   if (father.doomed || !is_reported_as_firm(father.life.status)) return;
   // The plot's density as clutter against its density as the father's target (detected):
   // about 0.2 for a target's plot inside paper003_exp2's clutter area, 1e-4 outside it.
-  const double clutter = clutter_density(plots_[pair.plot], pair.plot);
+  const double clutter = pre_->density(pre_->plots()[pair.plot], pair.plot);
   const double target = profile_.association.detection_probability *
                         candidates_[static_cast<std::size_t>(pair.candidate)].likelihood;
   const double doubt = clutter / (clutter + target);
   if (!(doubt >= profile_.branching.coast_son_doubt)) return;
-  doubtful_.push_back({pair.track, doubt, plots_[pair.plot].plot_id});
+  doubtful_.push_back({pair.track, doubt, pre_->plots()[pair.plot].plot_id});
 }
 
 void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
@@ -254,7 +254,7 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
               name(BranchType::kSon, son.id) + " of " + name(BranchType::kFather, father_id) +
                   ": its last motion before plot " + plot + " (coast son, doubt " +
                   std::to_string(d.doubt).substr(0, 4) + ")");
-    ++report.branches_created;
+    ++report.point.branches_created;
     slots_[son.id] = static_cast<int>(tracks_.size());
     tracks_.push_back(std::move(son));
     touched_.push_back(1);

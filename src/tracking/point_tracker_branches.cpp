@@ -86,7 +86,7 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
               "branch may replace it");
   }
   // §2.1 (1), (3): the non-manoeuvre kinds; the fathers' kind also updates the fathers.
-  claimed_by_.assign(plots_.size(), -1);
+  claimed_by_.assign(pre_->plots().size(), -1);
   pending_splits_.clear();
   doubtful_.clear();
   replaced_now_.clear();
@@ -100,7 +100,7 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   const std::size_t n = tracks_.size();
   std::vector<std::uint8_t> taken(n, 0);
   for (const BranchPair& pair :
-       confirm_pairs(branch_pairs_, static_cast<int>(n), static_cast<int>(plots_.size()))) {
+       confirm_pairs(branch_pairs_, static_cast<int>(n), static_cast<int>(pre_->plots().size()))) {
     taken[static_cast<std::size_t>(pair.track)] = 1;
   }
   for (std::size_t t = 0; t < n; ++t) {

@@ -20,15 +20,6 @@ namespace skytrack {
 using namespace tracking_detail;
 
 void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span) {
-  // A 3-D tracker's polar plot without height lies at el = 0, kilometres under its target's
-  // track: a batch holding one is searched on the horizontal plane (the exact gate is in
-  // measurement space), so a secondary radar's reply without Mode C still finds its track.
-  const bool heightless =
-      layout_.dims == 3 && std::any_of(plots_.begin(), plots_.end(), [](const PlotMeasurement& p) {
-        return is_polar(p.model.kind) && !measures_height(p);
-      });
-  index_.build(positions_, heightless ? 2 : layout_.dims);
-  find_plot_clouds();
   candidates_.clear();
   manoeuvre_candidates_.clear();
   // branching.last_motion_false_plots weighs the clutter round each plot while gating: from
@@ -88,7 +79,9 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     // A sector batch looks at a track whose predicted position lies in the sector; one whose
     // search region only reaches into it may take a plot from it but is not aged by it.
     covered_[t] =
-        covers(scan, centre) && look_sweep_ - track.looked_by(sensor_) > std::numbers::pi ? 1 : 0;
+        covers(scan, centre) && pre_->sweep() - track.looked_by(pre_->sensor()) > std::numbers::pi
+            ? 1
+            : 0;
     if (covered_[t] != 0 &&
         suspends_before_gating(tracks_[t], mid, std::max(batch_mid, estimate.time))) {
       tracks_[t].doomed = batches_;
@@ -104,7 +97,7 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
       predicted_[t] = estimate;
       continue;
     }
-    index_.within(centre, radius, neighbours_);
+    pre_->index().within(centre, radius, neighbours_);
     if (neighbours_.empty()) {
       predicted_[t] = estimate;
       continue;
@@ -123,7 +116,8 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     // every track is, from the start of the batch).
     for (std::size_t k = 0; held && dense_[t] == 0 && k < neighbours_.size(); ++k) {
       const int j = neighbours_[k];
-      const Innovation in = innovate(held->modes.front(), layout_, plots_[j], profile_.measurement);
+      const Innovation in =
+          innovate(held->modes.front(), layout_, pre_->plots()[j], profile_.measurement);
       if (in.ok && in_dense_clutter(in, j)) dense_[t] = 1;
     }
     if (narrowed && dense_[t] != 0) {
@@ -134,11 +128,11 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
       predicted_[t] = *narrowed;
     }
     for (const int j : neighbours_) {
-      PlotHypothesis hypothesis = filter_.hypothesise(predicted_[t], plots_[j]);
+      PlotHypothesis hypothesis = filter_.hypothesise(predicted_[t], pre_->plots()[j]);
       if (!hypothesis.usable) continue;
       // A plot inside any mode's gate (the union of the modes' gates), or a coasting father's
       // last motion's gate (branching.coast_on_last_motion), is a candidate.
-      if (hypothesis.min_nis > gate_threshold_[plots_[j].model.size()]) continue;
+      if (hypothesis.min_nis > gate_threshold_[pre_->plots()[j].model.size()]) continue;
       gated_[j] = 1;
       took_candidates_[t] = 1;
       const double likelihood = hypothesis.likelihood;
@@ -168,9 +162,10 @@ bool PointTracker::holds_last_motion() const {
 bool PointTracker::in_dense_clutter(const Innovation& last_motion, int plot) const {
   // Gate volume c_d g^(d/2) sqrt|S| = gate_volume_per_peak_ / N(0; 0, S), the peak density
   // from log N(nu; 0, S) and the NIS (c_d = pi^(d/2) / Gamma(d/2 + 1)).
-  const double volume = gate_volume_per_peak_[plots_[plot].model.size()] *
+  const double volume = gate_volume_per_peak_[pre_->plots()[plot].model.size()] *
                         std::exp(-last_motion.log_likelihood - 0.5 * last_motion.nis);
-  return clutter_density(plots_[plot], plot) * volume >= profile_.branching.last_motion_false_plots;
+  return pre_->density(pre_->plots()[plot], plot) * volume >=
+         profile_.branching.last_motion_false_plots;
 }
 
 std::optional<ImmEstimate> PointTracker::last_motion(const PointTrack& track, double time,
@@ -208,13 +203,13 @@ double PointTracker::nearest_time(const Eigen::Vector3d& centre) const {
   int nearest = neighbours_.front();
   double best = std::numeric_limits<double>::infinity();
   for (const int j : neighbours_) {
-    const double d = (positions_[j] - centre).squaredNorm();
+    const double d = (pre_->positions()[j] - centre).squaredNorm();
     if (d < best) {
       best = d;
       nearest = j;
     }
   }
-  return plots_[nearest].time;
+  return pre_->plots()[nearest].time;
 }
 
 }  // namespace skytrack

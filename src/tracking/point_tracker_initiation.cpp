@@ -67,7 +67,7 @@ ImmEstimate PointTracker::start_estimate(const Initiation& initiation, TrackLife
     const ImmEstimate predicted = filter_.predict(estimate, std::max(plot.time, estimate.time));
     const PlotHypothesis h = filter_.hypothesise(predicted, plot);
     if (!h.usable) continue;
-    const double density = clutter_density(plot, -1);
+    const double density = pre_->density(plot, -1);
     update_existence(life, h.likelihood / density, profile_.association.detection_probability,
                      profile_.association.gate_probability, profile_.track_life);
     estimate = counted(filter_.update(predicted, std::span(&h, 1), std::span(&one, 1), 0.0,
@@ -121,33 +121,22 @@ void PointTracker::note_explained(const std::vector<Candidate>& pool, std::span<
 }
 
 bool PointTracker::free_for_initiation(std::size_t j) const {
-  if (rejected_[j] || used_by_branch_[j]) return false;
+  if (pre_->rejected(j) || used_by_branch_[j]) return false;
   // In no gate, or in the gates of tracks that each explain another plot: a target of its
   // own, such as a formation member inside its neighbour's gate.
   return gated_[j] == 0 || held_[j] == 0;
 }
 
-void PointTracker::find_plot_clouds() {
-  // Many plots within a few of a plot's position sigmas in one look: chaff, a jammer's false
-  // plots, a swarm too dense to resolve. No chain can tell a target there from the rest, and
-  // a chain per plot would cost the square of the crowd in tracks and gates.
-  crowd_.assign(plots_.size(), 0);
-  for (std::size_t j = 0; j < plots_.size(); ++j) {
-    crowd_[j] =
-        index_.more_than(positions_[j], kCloudSigmas * position_sigma(plots_[j]), kCloudPlots);
-  }
-}
-
 void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame) {
   std::vector<PlotMeasurement> unused;
   int clouded = 0;
-  for (std::size_t j = 0; j < plots_.size(); ++j) {
+  for (std::size_t j = 0; j < pre_->plots().size(); ++j) {
     if (!free_for_initiation(j)) continue;
-    if (crowd_[j]) {
+    if (pre_->in_cloud(j)) {
       ++clouded;
       continue;
     }
-    unused.push_back(plots_[j]);
+    unused.push_back(pre_->plots()[j]);
   }
   if (clouded > 0) {
     report.plots_in_clouds += clouded;
@@ -166,7 +155,7 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
   }));
   int refused = 0;
   for (const Initiation& initiation :
-       initiator_.step(batches_, scan.time, sensor_, look_sweep_, unused, covered)) {
+       initiator_.step(batches_, scan.time, pre_->sensor(), pre_->sweep(), unused, covered)) {
     if (branching()) {
       const int father = lost_father_of(initiation.plots.back());
       if (father >= 0 && start_chain_branch(father, initiation, report, frame)) continue;

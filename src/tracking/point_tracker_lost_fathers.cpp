@@ -146,7 +146,7 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
   add_event(events_, TrackEventType::kBranchCreated, father_id,
             detail.append(" (a plot chain in its manoeuvre gate)"));
   add_association(frame, branch.id, plot.plot_id, plot.scan, 1.0);
-  ++report.branches_created;
+  ++report.point.branches_created;
   slots_[branch.id] = static_cast<int>(tracks_.size());
   tracks_.push_back(std::move(branch));
   return true;
@@ -166,7 +166,7 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
       case BranchChange::Kind::kPruned:
         track.life.status = TrackStatus::kDeleted;
         add_event(events_, TrackEventType::kBranchPruned, change.father, who + ": " + reason);
-        ++report.branches_pruned;
+        ++report.point.branches_pruned;
         break;
       case BranchChange::Kind::kIndependent:
         // A new father: numbered once confirmed (number_confirmed).
@@ -195,7 +195,7 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
         slots_[change.father] = i;
         add_event(events_, TrackEventType::kBranchPromoted, change.father,
                   who + " replaces " + name(BranchType::kFather, change.father) + ": " + reason);
-        ++report.branches_promoted;
+        ++report.point.branches_promoted;
         break;
       }
     }

@@ -24,7 +24,7 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
   std::size_t reported = 0;
   for (const PointTrack& track : tracks_) {
     if (track.branch != BranchType::kFather) {  // sons and grandsons are internal
-      if (track.life.status != TrackStatus::kDeleted) ++report.branches;
+      if (track.life.status != TrackStatus::kDeleted) ++report.point.branches;
       continue;
     }
     if (track.replaced) continue;  // its number lives on in the branch that replaced it

@@ -13,7 +13,6 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
-#include "skytrack/clutter/clutter_map.hpp"
 #include "skytrack/config/profile.hpp"
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/filter/imm_filter.hpp"
@@ -114,25 +113,10 @@ inline constexpr std::int64_t kManoeuvreExactStates = std::int64_t{1} << 12;
 // vanishing share of the whole anyway. Clusters of more than this many times the exact limit
 // take per-track PDA, the bound on a batch's association work.
 inline constexpr int kKBestClusterFactor = 2;
-// A plot cloud: more than this many other plots within this many of a plot's position
-// sigmas in one look (a formation of a few aircraft is not one).
-inline constexpr int kCloudPlots = 16;
-inline constexpr double kCloudSigmas = 5.0;
 // Height spread of a track started from plots without height [m].
 inline constexpr double kUnknownHeightSigma = 3000.0;
 // Acceleration spread of a new track, where the layout has acceleration states [m/s^2].
 inline constexpr double kInitialAccelerationSigma = 10.0;
-// Sparse clutter when nothing better is known: one false plot per (10 km)^k.
-inline double sparse_clutter_density(int position_dims) {
-  return std::pow(1e-4, position_dims);
-}
-
-inline std::optional<clutter::ClutterMapCells> clutter_map_cells(
-    const config::ClutterMapSpec& map) {
-  if (!map.enabled) return std::nullopt;
-  return clutter::ClutterMapCells{
-      .range = map.range_cell, .azimuth = map.azimuth_cell, .cartesian = map.cartesian_cell};
-}
 
 /// True when the plot measures height (elevation, z or altitude).
 inline bool measures_height(const PlotMeasurement& plot) {

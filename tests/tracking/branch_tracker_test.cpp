@@ -81,7 +81,7 @@ std::string shown(const std::string& text) {
 
 struct Script {
   explicit Script(const config::TrackingProfile& profile)
-      : tracker(*PointTracker::create(profile, 2)) {}
+      : pre(profile, 2), tracker(*PointTracker::create(profile, 2)) {}
 
   /// One scan at time t with plots (x, y); plot ids are 100 t + 1, 100 t + 2, ...
   const TrackFrame& scan(double t, std::vector<Eigen::Vector2d> points) {
@@ -100,7 +100,8 @@ struct Script {
       s.plots.push_back(plot);
     }
     report = ScanReport{};
-    tracker.process(s, frame, report);
+    pre.prepare(s, nullptr, report);
+    tracker.process(s, pre, frame, report);
     return frame;
   }
 
@@ -177,6 +178,7 @@ struct Script {
         }));
   }
 
+  Preprocessing pre;
   PointTracker tracker;
   TrackFrame frame;
   ScanReport report;
@@ -198,7 +200,7 @@ TEST(BranchTracker, FatherManoeuvrePairStartsAHiddenSonFromTheFathersLastPlot) {
   ASSERT_NE(son, nullptr);
   EXPECT_EQ(son->type, BranchType::kSon);
   EXPECT_EQ(shown(son->parent), 1);
-  EXPECT_EQ(s.report.branches, 1);
+  EXPECT_EQ(s.report.point.branches, 1);
   // AND the son starts from the father's latest update (plot 301 at t = 3): the father's
   // state predicted by the manoeuvre models and updated with the new plot, so it sits on the
   // plot and its velocity has turned towards it
@@ -1138,7 +1140,7 @@ TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {
   for (const TrackEvent& e : s.frame.events)
     EXPECT_EQ(type_name(e).rfind("branch_", 0), std::string::npos);
   EXPECT_EQ(s.live_branches(), 0);
-  EXPECT_EQ(s.report.branches, 0);
+  EXPECT_EQ(s.report.point.branches, 0);
 }
 
 }  // namespace

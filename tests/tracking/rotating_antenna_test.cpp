@@ -133,6 +133,7 @@ AntennaErrors track_antenna(const sim::Scenario& scenario, int seeds, bool use_p
   for (int seed = 1; seed <= seeds; ++seed) {
     auto simulator = sim::Simulator::create(scenario, static_cast<std::uint64_t>(seed));
     auto tracker = PointTracker::create(profile, 2);
+    Preprocessing pre(profile, 2);
     if (!simulator || !tracker) {
       ADD_FAILURE() << "scenario or tracker not created";
       return errors;
@@ -143,7 +144,8 @@ AntennaErrors track_antenna(const sim::Scenario& scenario, int seeds, bool use_p
         for (Plot& plot : batch->plots.plots) plot.time.reset();
       }
       ScanReport report;
-      tracker->process(batch->plots, frame, report);
+      pre.prepare(batch->plots, nullptr, report);
+      tracker->process(batch->plots, pre, frame, report);
       for (const TrackReport& track : frame.tracks) {
         if (!is_reported_as_firm(track.status)) continue;
         Gaussian g;

@@ -15,9 +15,9 @@
 #include "skytrack/core/plot.hpp"
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/pipeline/batch_clock.hpp"
+#include "skytrack/pipeline/estimator_stages.hpp"
 #include "skytrack/pipeline/sensor_feed.hpp"
 #include "skytrack/pipeline/sensor_timeline.hpp"
-#include "skytrack/tracking/point_tracker.hpp"
 
 namespace skytrack {
 
@@ -68,7 +68,7 @@ class Pipeline {
   const PlotScan& without_invalid_plots(const PlotScan& scan);
 
   config::TrackingProfile profile_;
-  std::optional<PointTracker> tracker_;  // created with the first batch with plots
+  std::optional<EstimatorStages> stages_;  // created with the first batch with plots
   struct SensorState {
     BatchClock clock;
     SensorFeed feed;

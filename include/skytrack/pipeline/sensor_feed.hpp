@@ -9,8 +9,8 @@
 #include "skytrack/core/plot.hpp"
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/pipeline/antenna_sweep.hpp"
+#include "skytrack/pipeline/estimator_stages.hpp"
 #include "skytrack/pipeline/look_assembler.hpp"
-#include "skytrack/tracking/point_tracker.hpp"
 
 namespace skytrack {
 
@@ -20,16 +20,16 @@ class SensorFeed {
 
   /// Gives the tracker the looks this batch completes; `frame` (at the batch's time) gets
   /// their decisions and the tracks after the last of them.
-  void feed(const PlotScan& batch, PointTracker& tracker, TrackFrame& frame, ScanReport& report);
+  void feed(const PlotScan& batch, EstimatorStages& tracker, TrackFrame& frame, ScanReport& report);
 
   const AntennaSweep& antenna() const { return antenna_; }
 
  private:
-  void feed_rotating(const PlotScan& batch, PointTracker& tracker);
+  void feed_rotating(const PlotScan& batch, EstimatorStages& tracker);
   /// One look into this batch's frame.
-  void look(const PlotScan& scan, const LookSources* sources, PointTracker& tracker);
+  void look(const PlotScan& scan, const LookSources* sources, EstimatorStages& tracker);
   /// A snapshot look: the whole batch, a revolution of sweep after the sensor's last look.
-  void snapshot(const PlotScan& scan, PointTracker& tracker);
+  void snapshot(const PlotScan& scan, EstimatorStages& tracker);
 
   AntennaSweep antenna_;
   LookAssembler looks_;

@@ -32,7 +32,7 @@ class SensorTimeline {
 
  private:
   struct Sensor {
-    std::optional<double> latest;      // its latest batch fed
+    std::optional<double> latest;  // its latest batch fed
     bool held = false;
     std::optional<double> hold_start;  // its time when it was held or another was last fed
   };

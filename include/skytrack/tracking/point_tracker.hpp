@@ -1,6 +1,8 @@
 #pragma once
-// The point tracker: IMM-JPDA (paper 003 §3) with logic-based initiation and track life,
-// after optional kernel-density clutter rejection (paper 000 §3.1). One call per plot batch.
+// The point tracker, the estimator of `mode: point` (estimator.hpp): IMM-JPDA (paper 003 §3)
+// with logic-based initiation and track life. One call per look, whose plots the preprocessing
+// stage has prepared; it asks that stage for clutter rejection once its gates say which plots
+// its confirmed tracks protect, and for the clutter density once they say which are false.
 //
 // Per batch: each track's search region comes from its IMM prediction at the middle of the
 // batch; candidate plots from a k-d tree are tested in an ellipsoidal gate at the track's
@@ -16,8 +18,8 @@
 // kinds with their own JPDA probabilities, their ordered confirmation
 // (tracking/branch_association.hpp) and the tree rules (tracking/branch_tree.hpp), in
 // point_tracker_branch*.cpp and point_tracker_lost_fathers.cpp. With branching off the tracker
-// is plain IMM-JPDA. The plain tracker's parts: point_tracker.cpp (creation, a look's steps,
-// measurements), _gating, _association (clutter density, JPDA, IMM-PDA update), _initiation,
+// is plain IMM-JPDA. The plain tracker's parts: point_tracker.cpp (creation, a look's steps),
+// _gating, _association (clutter rejection and density, JPDA, IMM-PDA update), _initiation,
 // _report and _looks (search regions, numbering).
 #include <chrono>
 #include <cstdint>
@@ -34,41 +36,21 @@
 #include "skytrack/association/gnn_associator.hpp"
 #include "skytrack/association/jpda_solver.hpp"
 #include "skytrack/association/plot_index.hpp"
-#include "skytrack/clutter/clutter_density.hpp"
-#include "skytrack/clutter/clutter_rejector.hpp"
 #include "skytrack/config/profile.hpp"
 #include "skytrack/core/expected.hpp"
 #include "skytrack/core/look.hpp"
 #include "skytrack/core/plot.hpp"
+#include "skytrack/core/scan_report.hpp"
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/filter/imm_filter.hpp"
 #include "skytrack/measurement/plot_measurement.hpp"
 #include "skytrack/tracking/branch_association.hpp"
 #include "skytrack/tracking/branch_tree.hpp"
+#include "skytrack/tracking/estimator.hpp"
 #include "skytrack/tracking/initiator.hpp"
 #include "skytrack/tracking/track_life.hpp"
 
 namespace skytrack {
-
-/// Counters and timings of one batch (logged by the daemon, summed by the tools).
-struct ScanReport {
-  int plots = 0;
-  int plots_invalid = 0;           // could not be turned into a measurement
-  int plots_rejected_clutter = 0;  // removed by clutter rejection
-  int plots_in_clouds = 0;         // left out of initiation: too many plots round them
-  int tentative = 0, confirmed = 0, coasting = 0;
-  int initiated = 0, deleted = 0;
-  int initiations_refused = 0;  // chains that started no track: initiation.max_tentative held
-  int clusters = 0, largest_cluster = 0, approximated_clusters = 0;
-  // Track updates in which a mode kept its prediction (an innovation covariance that would
-  // not factorise), and clusters whose association failed (JpdaStatus other than ok).
-  int numeric_failures = 0;
-  // Branch tracking: live sons and grandsons after the batch, and this batch's decisions.
-  int branches = 0;
-  int branches_created = 0, branches_promoted = 0, branches_pruned = 0;
-  // Stage timings: gating (predictions), association with the update, track management.
-  std::chrono::microseconds predict{}, associate{}, manage{};
-};
 
 struct PointTrack {
   std::int64_t id = 0;
@@ -132,24 +114,22 @@ struct PointTrack {
 /// confirmed track is given.
 inline constexpr std::int64_t kProvisionalNumber = std::int64_t{1} << 40;
 
-class PointTracker {
+class PointTracker final : public Estimator {
  public:
   /// Checks the profile's models and matrices; fails with a message naming what is wrong.
   static Expected<PointTracker> create(const config::TrackingProfile& profile, int dims);
 
-  /// Processes one look; fills `frame` (tracks at scan.time, associations, events). Without
-  /// `sources` the look is the batch `scan` as it arrived, a look at every direction it covers.
-  void process(const PlotScan& scan, TrackFrame& frame, ScanReport& report,
-               const LookSources* sources = nullptr);
+  /// Processes one look (estimator.hpp): its plots are `pre`'s.
+  void process(const PlotScan& scan, Preprocessing& pre, TrackFrame& frame,
+               ScanReport& report) override;
 
-  /// Reports the tracks at scan.time without a look (a batch whose plots all wait for a
-  /// later look); nothing is updated or aged.
-  void report_only(const PlotScan& scan, TrackFrame& frame, ScanReport& report);
+  void report_only(const PlotScan& scan, TrackFrame& frame, ScanReport& report) override;
 
   /// The search region of every track (its widest gate round its prediction to `time`, for
   /// plots with the sigmas of batch `header`) and of every candidate chain of the initiator:
   /// where this tracker may take a plot.
-  void search_regions(const PlotScan& header, double time, std::vector<SearchRegion>& out) const;
+  void search_regions(const PlotScan& header, double time,
+                      std::vector<SearchRegion>& out) const override;
 
   /// Every track: the fathers (reported) and, with branching, their sons and grandsons.
   const std::vector<PointTrack>& tracks() const { return tracks_; }
@@ -188,7 +168,6 @@ class PointTracker {
                          std::span<const double> beta_plots, double beta_miss, std::int64_t number,
                          TrackFrame& frame);
 
-  void make_measurements(const PlotScan& scan, const LookSources* sources, ScanReport& report);
   /// A region holding track t's gate at `threshold` (chi-square) round its prediction to
   /// `time`, for a target accelerating up to `accel` [m/s^2]: cheap, never smaller than the
   /// gate's own search region.
@@ -236,9 +215,6 @@ class PointTracker {
                       std::span<const double> beta);
   /// True when plot j may feed the initiator: in no gate, or in gates but unexplained.
   bool free_for_initiation(std::size_t j) const;
-  /// Marks the plots in plot clouds (crowd_): they start no chain and are no measure of
-  /// the batch-wide clutter density.
-  void find_plot_clouds();
   void initiate(const PlotScan& scan, ScanReport& report, TrackFrame& frame);
 
   // Branch tracking (point_tracker_branch*.cpp, point_tracker_lost_fathers.cpp).
@@ -331,8 +307,6 @@ class PointTracker {
   /// Gives the fathers confirmed with a provisional number their numbers, in the order of
   /// their latest plots; this frame names them by it.
   void number_confirmed(TrackFrame& frame);
-  /// Clutter density for plot `index` of this batch (-1: a plot of an earlier batch).
-  double clutter_density(const PlotMeasurement& plot, int index) const;
   void estimate_clutter_density();
   /// The start of a new track's estimate; the chain's plots after the first two also update
   /// its existence.
@@ -354,8 +328,6 @@ class PointTracker {
   std::optional<ImmFilter> hold_;       // a held last motion's (last_motion_accel_sigma)
   Eigen::VectorXd manoeuvre_start_;     // their probabilities at a gate's start (uniform)
   Initiator initiator_;
-  clutter::ClutterRejector clutter_;
-  clutter::ClutterDensity density_;
   struct RegionSeed {  // a track's combined estimate at its own time (search_regions)
     std::int64_t id = -1;
     double time = 0.0;
@@ -365,10 +337,7 @@ class PointTracker {
   mutable std::vector<RegionSeed> region_seeds_;  // per track slot
   double region_accel_ = 0.0;                     // [m/s^2]
   double max_turn_rate_ = 0.0;                    // [rad/s]
-  std::uint32_t sensor_ = 0;                      // this look's sensor
-  bool windowed_ = false;    // its density is estimated over the sensor's last revolution
-  double look_sweep_ = 0.0;  // the sweep at this look's end [rad]
-  std::vector<std::uint8_t> took_candidates_;  // per track: a plot of this look in its gate
+  std::vector<std::uint8_t> took_candidates_;     // per track: a plot of this look in its gate
   ClusterBuilder clusters_;
   JpdaSolver jpda_;
   JpdaSolver jpda_manoeuvre_;  // the manoeuvre kinds' clusters (branching)
@@ -389,12 +358,9 @@ class PointTracker {
   BranchTree tree_;
   std::unordered_map<std::int64_t, int> slots_;  // track number -> index in tracks_
 
+  Preprocessing* pre_ = nullptr;  // this look's plots, during process
+
   // Per-batch workspaces (reused).
-  std::vector<PlotMeasurement> plots_;
-  std::vector<Eigen::Vector3d> positions_;
-  std::vector<std::uint8_t> rejected_;
-  std::vector<std::uint8_t> crowd_;  // per plot: in a plot cloud
-  std::vector<std::uint8_t> boxed_;  // per plot: counted by the batch-wide density
   std::vector<std::uint8_t> gated_;
   std::vector<std::uint8_t> dense_;     // per track: a plot round it in_dense_clutter this batch
   std::vector<std::uint8_t> covered_;   // per track: inside this batch's coverage
@@ -463,9 +429,7 @@ class PointTracker {
   std::vector<GatedPair> pairs_;
   std::vector<PlotHypothesis> hypotheses_;  // one track's update
   std::vector<double> kept_beta_;
-  std::vector<double> auto_density_;           // per plot, measurement space
-  std::vector<std::uint8_t> clutter_counted_;  // per plot: counted by the clutter map
-  PlotIndex index_;
+  std::vector<std::uint8_t> false_plots_;  // per plot: no firm track gates it (clutter map)
 };
 
 }  // namespace skytrack

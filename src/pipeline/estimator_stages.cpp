@@ -1,0 +1,39 @@
+#include "skytrack/pipeline/estimator_stages.hpp"
+
+#include <chrono>
+#include <string>
+
+#include "skytrack/tracking/point_tracker.hpp"
+
+namespace skytrack {
+
+Expected<EstimatorStages> EstimatorStages::create(const config::TrackingProfile& profile,
+                                                  int dims) {
+  std::unique_ptr<Estimator> estimator;
+  switch (profile.mode) {
+    case config::TrackingMode::kPoint: {
+      auto point = PointTracker::create(profile, dims);
+      if (!point) return unexpected(point.error());
+      estimator = std::make_unique<PointTracker>(std::move(*point));
+      break;
+    }
+    case config::TrackingMode::kGroup:
+    case config::TrackingMode::kExtended:
+    case config::TrackingMode::kBernoulli:
+      return make_error("profile '" + profile.identity.name + "': mode '" +
+                        std::string(config::to_string(profile.mode)) +
+                        "' is not implemented yet (only point)");
+  }
+  return EstimatorStages(Preprocessing(profile, dims), std::move(estimator));
+}
+
+void EstimatorStages::process(const PlotScan& look, const LookSources* sources, TrackFrame& frame,
+                              ScanReport& report) {
+  const auto start = std::chrono::steady_clock::now();
+  pre_.prepare(look, sources, report);
+  report.predict = std::chrono::duration_cast<std::chrono::microseconds>(
+      std::chrono::steady_clock::now() - start);
+  estimator_->process(look, pre_, frame, report);
+}
+
+}  // namespace skytrack
