@@ -69,12 +69,12 @@ void run_batches(benchmark::State& state, bool dense_clutter_rules, bool branchi
   skytrack::config::TrackingProfile profile;
   profile.identity = {"bench", "1", ""};
   if (dense_clutter_rules) {  // config/profiles/dense_clutter.yaml's initiation and map
-    profile.initiation.m = 3;
-    profile.initiation.n = 3;
+    profile.point.initiation.m = 3;
+    profile.point.initiation.n = 3;
     profile.association.clutter_map.enabled = true;
   }
-  profile.branching.enabled = branching;
-  if (!gated_seeds) profile.initiation.gated_seed_beta = 1.0;  // only plots in no gate seed
+  profile.point.branching.enabled = branching;
+  if (!gated_seeds) profile.point.initiation.gated_seed_beta = 1.0;  // only plots in no gate seed
   auto pipeline = skytrack::Pipeline::create(profile);
   std::size_t next = 0;
   for (; next < kWarmup; ++next) pipeline->process(batches[next]);

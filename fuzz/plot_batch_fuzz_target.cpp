@@ -38,8 +38,8 @@ const std::vector<config::TrackingProfile>& profiles() {
     out[1].association.method = config::AssociationMethod::kGnn;
     out[2].clutter_rejection.enabled = true;
     out[3].dimension = 3;
-    out[4].track_life.confirmation = config::ConfirmationMethod::kMOfN;
-    out[4].branching.enabled = false;
+    out[4].point.track_life.confirmation = config::ConfirmationMethod::kMOfN;
+    out[4].point.branching.enabled = false;
     out[5].antenna.rotation = config::AntennaRotation::kRotating;
     out[5].antenna.period = 4.0;
     out[6].association.clutter_density = 1e-9;

@@ -270,7 +270,7 @@ void Daemon::Impl::track_one(QueuedScan& item) {
           "sensor {} scan {}: {} chains started no track: initiation.max_tentative ({}) "
           "tentative tracks held ({} batches with refusals since last message)",
           scan.sensor, scan.scan, result.report.initiations_refused,
-          pipeline.profile().initiation.max_tentative, *count);
+          pipeline.profile().point.initiation.max_tentative, *count);
     }
   }
   const double latency = std::chrono::duration<double>(Clock::now() - item.received).count();

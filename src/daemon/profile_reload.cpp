@@ -40,9 +40,9 @@ std::string restart_reason(const config::TrackingProfile& a, const config::Track
           "initial_mode_probabilities");
   differs(a.association == b.association, "association");
   differs(a.clutter_rejection == b.clutter_rejection, "clutter_rejection");
-  differs(a.initiation == b.initiation, "initiation");
-  differs(a.track_life == b.track_life, "track_life");
-  differs(a.branching == b.branching, "branching");
+  differs(a.point.initiation == b.point.initiation, "point.initiation");
+  differs(a.point.track_life == b.point.track_life, "point.track_life");
+  differs(a.point.branching == b.point.branching, "point.branching");
   return out.empty() ? "tracking parameters" : out;
 }
 

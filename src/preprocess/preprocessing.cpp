@@ -96,7 +96,7 @@ double Preprocessing::density(const PlotMeasurement& plot, int index) const {
   double value =
       profile_.association.clutter_density.value_or(sparse_clutter_density(m.position_components));
   value *= m.volume_element(plot.z);
-  if (m.has_range_rate) value /= 2.0 * profile_.initiation.max_speed;
+  if (m.has_range_rate) value /= 2.0 * profile_.point.initiation.max_speed;
   return value;
 }
 

@@ -25,7 +25,7 @@ using namespace tracking_detail;
 /// height is measured to tens of metres (canalA's military traffic climbs at 50 m/s).
 Expected<std::optional<ImmFilter>> manoeuvre_filter(const config::TrackingProfile& profile,
                                                     const ImmFilter& main) {
-  const config::BranchingSpec& spec = profile.branching;
+  const config::BranchingSpec& spec = profile.point.branching;
   if (!spec.enabled) return std::optional<ImmFilter>();
   std::vector<AnyMotionModel> models;
   std::vector<std::string> names;
@@ -56,8 +56,8 @@ Expected<std::optional<ImmFilter>> manoeuvre_filter(const config::TrackingProfil
 /// branching.confirmation (m_of_n: rule 10 of paper 003 §1 as in its examples, a branch
 /// confirmed by its own run of associations).
 config::TrackLifeSpec branch_life(const config::TrackingProfile& profile) {
-  config::TrackLifeSpec spec = profile.track_life;
-  spec.confirmation = profile.branching.confirmation;
+  config::TrackLifeSpec spec = profile.point.track_life;
+  spec.confirmation = profile.point.branching.confirmation;
   return spec;
 }
 
@@ -76,8 +76,8 @@ Expected<PointTracker> PointTracker::create(const config::TrackingProfile& profi
   if (!manoeuvre) return unexpected(manoeuvre.error());
   // A held last motion's models: the IMM's, with at most last_motion_accel_sigma of noise.
   std::optional<ImmFilter> hold;
-  if (const double sigma = profile.branching.last_motion_accel_sigma;
-      profile.branching.enabled && profile.branching.coast_on_last_motion && sigma > 0.0) {
+  if (const double sigma = profile.point.branching.last_motion_accel_sigma;
+      profile.point.branching.enabled && profile.point.branching.coast_on_last_motion && sigma > 0.0) {
     config::TrackingProfile held = profile;
     for (config::MotionModelSpec& m : held.motion_models) {
       m.accel_sigma = std::min(m.accel_sigma, sigma);
@@ -99,7 +99,7 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout l
       filter_(std::move(filter)),
       manoeuvre_(std::move(manoeuvre)),
       hold_(std::move(hold)),
-      initiator_(profile.initiation, layout.dims),
+      initiator_(profile.point.initiation, layout.dims),
       jpda_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
                         .k_best = profile.association.k_best}),
       jpda_manoeuvre_(JpdaOptions{.max_exact_tracks = profile.association.max_exact_cluster_size,
@@ -109,7 +109,7 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout l
     gate_threshold_[d] = chi_square_quantile(profile.association.gate_probability, d);
     const double half = 0.5 * d;
     gate_volume_per_peak_[d] = std::pow(0.5 * gate_threshold_[d], half) / std::tgamma(half + 1.0);
-    manoeuvre_threshold_[d] = chi_square_quantile(profile.branching.manoeuvre_gate_probability, d);
+    manoeuvre_threshold_[d] = chi_square_quantile(profile.point.branching.manoeuvre_gate_probability, d);
   }
   // What a track may do between looks, for its search region (search_regions): three sigma
   // of its models' white acceleration, or its fastest turn.

@@ -160,7 +160,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
   // is not evidence that there is none (IPDA with a detectability chain).
   update_existence(track.life, ratios.sum,
                    support_detection_probability(track.life, pd, detectability_at(t)),
-                   profile_.association.gate_probability, profile_.track_life);
+                   profile_.association.gate_probability, profile_.point.track_life);
   add_support(track.life, ratios, t);
   bool detected = detection > 0.5;
   if (holds_last_motion() && is_reported_as_firm(track.life.status) &&
@@ -172,7 +172,7 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
     if (!detected) hold_last_motion(track);
   }
   const LifeChange change = advance_life(
-      track.life, detected, mode_spread(track.estimate, kLifeSpreadDims), profile_.track_life);
+      track.life, detected, mode_spread(track.estimate, kLifeSpreadDims), profile_.point.track_life);
   if (change.confirmed) {
     add_event(events_, TrackEventType::kConfirmed, track.id, "");
     if (branching()) confirmed_now_.push_back(t);

@@ -38,9 +38,9 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   const std::string plot = std::to_string(pre_->plots()[pair.plot].plot_id);
   if (branch.branch == BranchType::kFather) {  // made independent earlier in this batch
     update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
-                     profile_.association.gate_probability, profile_.track_life);
+                     profile_.association.gate_probability, profile_.point.track_life);
     const LifeChange change = advance_life(
-        branch.life, true, mode_spread(branch.estimate, kLifeSpreadDims), profile_.track_life);
+        branch.life, true, mode_spread(branch.estimate, kLifeSpreadDims), profile_.point.track_life);
     if (change.confirmed) add_event(events_, TrackEventType::kConfirmed, number, "");
     return;
   }
@@ -55,7 +55,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   // after misses) stays wide for a scan; misses end it (age_branches).
   if (weighs_existence(branch)) {
     update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
-                     profile_.association.gate_probability, profile_.track_life);
+                     profile_.association.gate_probability, profile_.point.track_life);
   }
   const bool confirmed = advance_life(branch.life, true, 0.0, life_of(branch)).confirmed;
   if (branch.coast_son) {
@@ -93,7 +93,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
 }
 
 void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, TrackFrame& frame) {
-  const config::BranchingSpec& spec = profile_.branching;
+  const config::BranchingSpec& spec = profile_.point.branching;
   const PointTrack& parent = tracks_[pair.track];
   const bool of_father = parent.branch == BranchType::kFather;
   if (of_father && !may_start_sons(parent)) return;
@@ -121,8 +121,8 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   // Its existence starts at its pair's association probability (the chance that the plot
   // is its parent's target; at least a new track's): its later plots decide.
   if (weighs_existence(branch)) {
-    branch.life.existence = std::clamp(pair.probability, profile_.track_life.initial_existence,
-                                       profile_.track_life.confirm_existence);
+    branch.life.existence = std::clamp(pair.probability, profile_.point.track_life.initial_existence,
+                                       profile_.point.track_life.confirm_existence);
   }
   branch.estimate =
       of_father ? son_start(pair.track, plot) : start_estimate(initiation, branch.life);
@@ -168,7 +168,7 @@ ImmEstimate PointTracker::son_start(int father, const PlotMeasurement& plot) con
 
 bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double score,
                              std::int64_t plot_id, ScanReport& report) {
-  const config::BranchingSpec& spec = profile_.branching;
+  const config::BranchingSpec& spec = profile_.point.branching;
   for (const bool per_father : {true, false}) {
     const int count = per_father ? tree_.branch_count(father) : tree_.total_branches();
     const int cap = per_father ? spec.max_branches_per_father : spec.max_total_branches;
@@ -203,7 +203,7 @@ bool PointTracker::make_room(std::int64_t father, std::int64_t parent, double sc
 }
 
 void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
-  const int window = profile_.branching.coast_son_looks;
+  const int window = profile_.point.branching.coast_son_looks;
   for (std::size_t i = 0; i < tracks_.size(); ++i) {
     PointTrack& branch = tracks_[i];
     if (branch.branch == BranchType::kFather || branch.life.status == TrackStatus::kDeleted ||
@@ -218,7 +218,7 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
         branch.score += miss;
         if (!age_coast_son(static_cast<int>(i), frame.time)) {
           reason = "no plot in delete_confirmed_misses (" +
-                   std::to_string(profile_.track_life.delete_confirmed_misses) + ") looks";
+                   std::to_string(profile_.point.track_life.delete_confirmed_misses) + ") looks";
         }
       }
       // Undecided at the end of its window: the father's plots since the split stand.
@@ -238,7 +238,7 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
     const double spread = mode_spread(branch.estimate, kLifeSpreadDims);
     if (weighs_existence(branch)) {
       update_existence(branch.life, 0.0, profile_.association.detection_probability,
-                       profile_.association.gate_probability, profile_.track_life);
+                       profile_.association.gate_probability, profile_.point.track_life);
     }
     update_detectability(branch.life, 0.0, static_cast<int>(i));
     if (advance_life(branch.life, false, spread, life_of(branch)).deleted) {
@@ -266,7 +266,7 @@ void PointTracker::retire_doomed_fathers() {
 
 bool PointTracker::room_for_chain(std::int64_t father, double existence, std::int64_t plot_id,
                                   ScanReport& report) {
-  const int max_children = profile_.branching.max_children;
+  const int max_children = profile_.point.branching.max_children;
   if (tree_.can_branch(father, max_children)) return true;
   // No room: the chain displaces the father's least likely chain son (lowest existence),
   // if less likely than itself. Sons from manoeuvre pairs stay.

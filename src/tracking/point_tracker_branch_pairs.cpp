@@ -40,7 +40,7 @@ void PointTracker::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) 
     // A sector look far from the track: a bound on its manoeuvre gate says so cheaply.
     SearchRegion bound = region_bound(
         t, scan, std::max(batch_mid_, prior.time), manoeuvre_threshold_[kMaxMeasurementDim],
-        std::max(region_accel_, 3.0 * profile_.branching.manoeuvre_accel_sigma));
+        std::max(region_accel_, 3.0 * profile_.point.branching.manoeuvre_accel_sigma));
     bound.radius += seed_speed(t) * half_span_;
     if (!covers_region(scan, bound.centre, bound.radius)) return;
   }
@@ -88,7 +88,7 @@ void PointTracker::claim_best_plot(int t, const std::vector<Candidate>& pool,
 }
 
 void PointTracker::split_undecided_fathers() {
-  const double tau = profile_.branching.ambiguity_beta;
+  const double tau = profile_.point.branching.ambiguity_beta;
   for (const PendingSplit& p : pending_splits_) {
     // A plot that is another father's likeliest is that father's target (a formation
     // member), not a second hypothesis of this one.
@@ -194,7 +194,7 @@ void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
 }
 
 void PointTracker::note_doubtful_update(const BranchPair& pair) {
-  if (profile_.branching.coast_sons == 0 || pair.candidate < 0) return;
+  if (profile_.point.branching.coast_sons == 0 || pair.candidate < 0) return;
   const PointTrack& father = tracks_[pair.track];
   if (father.doomed || !is_reported_as_firm(father.life.status)) return;
   // The plot's density as clutter against its density as the father's target (detected):
@@ -203,12 +203,12 @@ void PointTracker::note_doubtful_update(const BranchPair& pair) {
   const double target = profile_.association.detection_probability *
                         candidates_[static_cast<std::size_t>(pair.candidate)].likelihood;
   const double doubt = clutter / (clutter + target);
-  if (!(doubt >= profile_.branching.coast_son_doubt)) return;
+  if (!(doubt >= profile_.point.branching.coast_son_doubt)) return;
   doubtful_.push_back({pair.track, doubt, pre_->plots()[pair.plot].plot_id});
 }
 
 void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
-  const int most = profile_.branching.coast_sons;
+  const int most = profile_.point.branching.coast_sons;
   for (const DoubtfulUpdate& d : doubtful_) {
     const PointTrack& father = tracks_[d.track];
     const BeforeUpdate& before = before_update_[static_cast<std::size_t>(d.track)];
@@ -239,8 +239,8 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
     son.coast_son = true;
     son.life.scans = 1;
     son.life.consecutive_misses = 1;  // this look: the target missed, the plot a false alarm
-    son.life.existence = std::clamp(d.doubt, profile_.track_life.initial_existence,
-                                    profile_.track_life.confirm_existence);
+    son.life.existence = std::clamp(d.doubt, profile_.point.track_life.initial_existence,
+                                    profile_.point.track_life.confirm_existence);
     // The target missed in this look: the father's support before its plot, and a miss.
     son.life.support = before.support;
     son.life.detectable = before.detectable;
@@ -277,9 +277,9 @@ bool PointTracker::age_coast_son(int t, double time) {
   if (std::optional<ImmEstimate> held = last_motion(son, time, true)) {
     son.estimate = std::move(*held);
   }
-  return son.life.consecutive_misses < profile_.track_life.delete_confirmed_misses &&
+  return son.life.consecutive_misses < profile_.point.track_life.delete_confirmed_misses &&
          position_spread(son.estimate.modes.front(), kLifeSpreadDims) <=
-             profile_.track_life.delete_position_sigma;
+             profile_.point.track_life.delete_position_sigma;
 }
 
 bool PointTracker::of_undecided_father(std::int64_t son) const {

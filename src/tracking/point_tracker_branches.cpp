@@ -33,7 +33,7 @@ namespace skytrack {
 using namespace tracking_detail;
 
 const config::TrackLifeSpec& PointTracker::life_of(const PointTrack& branch) const {
-  return branch.from_chain ? profile_.track_life : branch_life_;
+  return branch.from_chain ? profile_.point.track_life : branch_life_;
 }
 
 bool PointTracker::weighs_existence(const PointTrack& branch) const {
@@ -44,13 +44,13 @@ bool PointTracker::weighs_existence(const PointTrack& branch) const {
 int PointTracker::recovery_misses() const {
   // A suspended father waits, unreported, for initiation.n more scans after it may no longer
   // branch: the time a plot chain of its target needs to form and confirm (§3.3).
-  return profile_.track_life.delete_confirmed_misses + profile_.initiation.n;
+  return profile_.point.track_life.delete_confirmed_misses + profile_.point.initiation.n;
 }
 
 bool PointTracker::may_start_sons(const PointTrack& father) const {
   return is_reported_as_firm(father.life.status) &&
          (!father.doomed ||
-          father.life.consecutive_misses < profile_.track_life.delete_confirmed_misses);
+          father.life.consecutive_misses < profile_.point.track_life.delete_confirmed_misses);
 }
 
 bool PointTracker::suspends_before_gating(const PointTrack& track, const Gaussian& mid,
@@ -61,7 +61,7 @@ bool PointTracker::suspends_before_gating(const PointTrack& track, const Gaussia
   }
   const std::optional<ImmEstimate> last = last_motion(track, time);
   return position_spread(last ? last->modes.front() : mid, kLifeSpreadDims) >
-         kSuspendBeforeGating * profile_.track_life.delete_position_sigma;
+         kSuspendBeforeGating * profile_.point.track_life.delete_position_sigma;
 }
 
 ImmEstimate PointTracker::manoeuvre_prediction(const ImmEstimate& estimate, double time) const {
@@ -90,7 +90,7 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   pending_splits_.clear();
   doubtful_.clear();
   replaced_now_.clear();
-  if (profile_.branching.coast_sons > 0) before_update_.assign(tracks_.size(), BeforeUpdate{});
+  if (profile_.point.branching.coast_sons > 0) before_update_.assign(tracks_.size(), BeforeUpdate{});
   solve_kind(PairKind::kFatherNonManoeuvre, report, frame);
   split_undecided_fathers();
   solve_kind(PairKind::kSonNonManoeuvre, report, frame);
@@ -130,7 +130,7 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
   }
   // The fathers' kind runs even without pairs: it coasts and ages the fathers.
   if (kind_list_.empty() && kind != PairKind::kFatherNonManoeuvre) return;
-  const double gate_probability = manoeuvre ? profile_.branching.manoeuvre_gate_probability
+  const double gate_probability = manoeuvre ? profile_.point.branching.manoeuvre_gate_probability
                                             : profile_.association.gate_probability;
   solve_clusters(
       pool, kind_list_, gate_probability, report,
@@ -140,10 +140,10 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
         // Two plots each likely enough: one frame cannot decide (§0), the sons will.
         const bool split = kind == PairKind::kFatherNonManoeuvre && !was_doomed &&
                            may_start_sons(tracks_[t]) &&
-                           ambiguous(beta, miss, profile_.branching.ambiguity_beta);
+                           ambiguous(beta, miss, profile_.point.branching.ambiguity_beta);
         std::optional<ImmEstimate> last_detected;
         if (split && holds_last_motion()) last_detected = tracks_[t].last_detected;
-        if (kind == PairKind::kFatherNonManoeuvre && profile_.branching.coast_sons > 0) {
+        if (kind == PairKind::kFatherNonManoeuvre && profile_.point.branching.coast_sons > 0) {
           before_update_[static_cast<std::size_t>(t)] = {
               tracks_[t].last_detected, tracks_[t].life.support, tracks_[t].life.detectable};
         }
@@ -154,7 +154,7 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
         if (track.life.status == TrackStatus::kDeleted) return;
         // Only an ambiguity test needs to know whose likeliest plot each plot is.
         if (kind == PairKind::kFatherNonManoeuvre && !track.doomed &&
-            profile_.branching.ambiguity_beta < 1.0) {
+            profile_.point.branching.ambiguity_beta < 1.0) {
           claim_best_plot(t, pool, mine, beta, miss);
           // Decided once every father's likeliest plot is known (split_undecided_fathers).
           if (split && may_start_sons(track)) {

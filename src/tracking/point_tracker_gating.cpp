@@ -24,7 +24,7 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   manoeuvre_candidates_.clear();
   // branching.last_motion_false_plots weighs the clutter round each plot while gating: from
   // all of this batch's plots (associate_branches re-estimates it from the ungated ones).
-  if (holds_last_motion() && profile_.branching.last_motion_false_plots > 0.0) {
+  if (holds_last_motion() && profile_.point.branching.last_motion_false_plots > 0.0) {
     estimate_clutter_density();
   }
   batch_mid_ = batch_mid;
@@ -49,7 +49,7 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
   }
   covered_.assign(tracks_.size(), 1);
   took_candidates_.assign(tracks_.size(), 0);
-  dense_.assign(tracks_.size(), profile_.branching.last_motion_false_plots > 0.0 ? 0 : 1);
+  dense_.assign(tracks_.size(), profile_.point.branching.last_motion_false_plots > 0.0 ? 0 : 1);
   suspended_at_gate_.clear();
   const double widest = gate_threshold_[kMaxMeasurementDim];
   for (std::size_t t = 0; t < tracks_.size(); ++t) {
@@ -109,7 +109,7 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     // branching.last_motion_false_plots: the clutter is weighed in the last motion's gate,
     // whether or not the father gates on it in this look.
     const bool weighs_clutter =
-        holds_last_motion() && profile_.branching.last_motion_false_plots > 0.0;
+        holds_last_motion() && profile_.point.branching.last_motion_false_plots > 0.0;
     const std::optional<ImmEstimate> held =
         narrowed || !weighs_clutter ? narrowed : last_motion(track, predicted_[t].time, true);
     // In a clutter area: a plot round it in dense clutter (without last_motion_false_plots
@@ -156,7 +156,7 @@ void PointTracker::hold_last_motion(PointTrack& track) const {
 }
 
 bool PointTracker::holds_last_motion() const {
-  return branching() && profile_.branching.coast_on_last_motion;
+  return branching() && profile_.point.branching.coast_on_last_motion;
 }
 
 bool PointTracker::in_dense_clutter(const Innovation& last_motion, int plot) const {
@@ -165,7 +165,7 @@ bool PointTracker::in_dense_clutter(const Innovation& last_motion, int plot) con
   const double volume = gate_volume_per_peak_[pre_->plots()[plot].model.size()] *
                         std::exp(-last_motion.log_likelihood - 0.5 * last_motion.nis);
   return pre_->density(pre_->plots()[plot], plot) * volume >=
-         profile_.branching.last_motion_false_plots;
+         profile_.point.branching.last_motion_false_plots;
 }
 
 std::optional<ImmEstimate> PointTracker::last_motion(const PointTrack& track, double time,
@@ -175,7 +175,7 @@ std::optional<ImmEstimate> PointTracker::last_motion(const PointTrack& track, do
       track.branch == BranchType::kFather && is_reported_as_firm(track.life.status);
   if (!holds_last_motion() || !track.last_detected || !(firm_father || track.coast_son) ||
       (!track.coast_son && track.life.consecutive_misses < 1 && !missing_now &&
-       profile_.branching.non_manoeuvre_gate != config::NonManoeuvreGate::kLastMotion)) {
+       profile_.point.branching.non_manoeuvre_gate != config::NonManoeuvreGate::kLastMotion)) {
     return std::nullopt;
   }
   // The likeliest mode at the last detection, predicted alone: IMM mixing would blend in the

@@ -69,7 +69,7 @@ ImmEstimate PointTracker::start_estimate(const Initiation& initiation, TrackLife
     if (!h.usable) continue;
     const double density = pre_->density(plot, -1);
     update_existence(life, h.likelihood / density, profile_.association.detection_probability,
-                     profile_.association.gate_probability, profile_.track_life);
+                     profile_.association.gate_probability, profile_.point.track_life);
     estimate = counted(filter_.update(predicted, std::span(&h, 1), std::span(&one, 1), 0.0,
                                       profile_.association.detection_probability,
                                       profile_.association.gate_probability, density));
@@ -80,7 +80,7 @@ ImmEstimate PointTracker::start_estimate(const Initiation& initiation, TrackLife
 config::DetectabilitySpec PointTracker::detectability_at(int t) const {
   // Masking is a clutter area's (branching.last_motion_false_plots): elsewhere a miss is
   // independent of the last, as P_D says.
-  config::DetectabilitySpec chain = profile_.branching.detectability;
+  config::DetectabilitySpec chain = profile_.point.branching.detectability;
   if (static_cast<std::size_t>(t) >= dense_.size() || dense_[t] == 0) chain.hide = 0.0;
   return chain;
 }
@@ -113,7 +113,7 @@ void PointTracker::note_explained(const std::vector<Candidate>& pool, std::span<
     }
   }
   if (best < 0) return;
-  if (best_beta > profile_.initiation.gated_seed_beta) {
+  if (best_beta > profile_.point.initiation.gated_seed_beta) {
     held_[best] = 1;
     return;
   }
@@ -160,7 +160,7 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
       const int father = lost_father_of(initiation.plots.back());
       if (father >= 0 && start_chain_branch(father, initiation, report, frame)) continue;
     }
-    if (tentative >= profile_.initiation.max_tentative) {
+    if (tentative >= profile_.point.initiation.max_tentative) {
       ++refused;
       continue;
     }
@@ -168,7 +168,7 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     PointTrack track;
     track.id = next_provisional_++;
     track.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
-    track.life.existence = profile_.track_life.initial_existence;
+    track.life.existence = profile_.point.track_life.initial_existence;
     track.estimate = start_estimate(initiation, track.life);
     track.quality = 1.0;
     if (branching()) {
@@ -191,7 +191,7 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
     report.initiations_refused += refused;
     add_event(events_, TrackEventType::kOverload, 0,
               std::to_string(refused) +
-                  " chains start no track: " + std::to_string(profile_.initiation.max_tentative) +
+                  " chains start no track: " + std::to_string(profile_.point.initiation.max_tentative) +
                   " tentative tracks held (initiation.max_tentative)");
   }
 }

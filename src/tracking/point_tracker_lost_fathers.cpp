@@ -84,7 +84,7 @@ void PointTracker::continue_lost_fathers(ScanReport& report) {
     if (f < 0) continue;
     const std::int64_t father = tracks_[f].id, number = track.id;
     const std::string why = name(BranchType::kFather, number) + " confirmed in its manoeuvre gate";
-    if (!tree_.can_branch(father, profile_.branching.max_children)) {
+    if (!tree_.can_branch(father, profile_.point.branching.max_children)) {
       // The new track is likelier than any branch that has not confirmed: the least likely
       // son makes room for it.
       const BranchNode* node = tree_.find(father);
@@ -122,7 +122,7 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
   const PlotMeasurement& plot = initiation.plots.back();
   PointTrack branch;
   branch.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
-  branch.life.existence = profile_.track_life.initial_existence;
+  branch.life.existence = profile_.point.track_life.initial_existence;
   branch.estimate = start_estimate(initiation, branch.life);
   if (!room_for_chain(father_id, branch.life.existence, plot.plot_id, report) ||
       !make_room(father_id, father_id, score, plot.plot_id, report)) {

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -38,7 +39,7 @@ TEST(ProfileLoader, ShippedDefaultProfileLoads) {
   ASSERT_EQ(profile->motion_models.size(), 3u);
   EXPECT_EQ(profile->motion_models[1].name, "ct_left");
   EXPECT_GT(profile->motion_models[1].turn_rate, 0.0);  // positive = left
-  EXPECT_TRUE(profile->branching.enabled);
+  EXPECT_TRUE(profile->point.branching.enabled);
   EXPECT_FALSE(profile->association.clutter_density.has_value());  // auto
 }
 
@@ -52,6 +53,46 @@ TEST(ProfileLoader, EveryShippedProfileLoads) {
     EXPECT_TRUE(profile) << profile.error().message;
   }
   EXPECT_GE(files, 7);
+}
+
+TEST(ProfileLoader, PointSectionsAtTheTopLevelLoadAsInProfilesOfTheEarlierShape) {
+  // GIVEN the same point-tracker keys under point: and, as profiles had them before mode
+  // sections, at the top level
+  const std::string keys[] = {"initiation:\n  m: 2\n", "track_life:\n  confirm_m: 2\n",
+                              "branching:\n  max_children: 2\n"};
+  std::string nested = "point:\n", flat;
+  for (const std::string& k : keys) {
+    flat += k;
+    std::istringstream lines(k);
+    for (std::string line; std::getline(lines, line);) nested += "  " + line + "\n";
+  }
+  // WHEN both load THEN they give the same profile
+  const auto a = parse_profile(kHeader + nested, "p.yaml");
+  const auto b = parse_profile(kHeader + flat, "p.yaml");
+  ASSERT_TRUE(a) << a.error().message;
+  ASSERT_TRUE(b) << b.error().message;
+  EXPECT_TRUE(*a == *b);
+  EXPECT_EQ(a->point.initiation.m, 2);
+  EXPECT_EQ(a->point.track_life.confirm_m, 2);
+  EXPECT_EQ(a->point.branching.max_children, 2);
+}
+
+TEST(ProfileLoader, PointSectionsInBothPlacesOrForAnotherModeAreRefusedWithTheWayOut) {
+  // WHEN a profile has point: and a top-level branching THEN the message says where it goes
+  const auto both =
+      parse_profile(kHeader + std::string("point:\n  track_life: {}\nbranching: {}\n"), "p.yaml");
+  ASSERT_FALSE(both);
+  EXPECT_THAT(both.error().message, HasSubstr("branching"));
+  EXPECT_THAT(both.error().message, HasSubstr("belongs under point: (point.branching)"));
+  // WHEN a group profile has a point section THEN it is named as another mode's
+  const auto other =
+      parse_profile("profile: {name: t, version: 1}\nmode: group\npoint: {}\n", "p.yaml");
+  ASSERT_FALSE(other);
+  EXPECT_THAT(other.error().message, HasSubstr("applies to mode: point only"));
+  // AND an unknown key under point: names its path
+  const auto unknown = parse_profile(kHeader + std::string("point:\n  branchin: {}\n"), "p.yaml");
+  ASSERT_FALSE(unknown);
+  EXPECT_THAT(unknown.error().message, HasSubstr("point.branchin"));
 }
 
 TEST(ProfileLoader, ShippedDefaultProfileEqualsTheCompiledDefaults) {
@@ -114,8 +155,8 @@ branching: {enabled: false, manoeuvre_models: [right, singer]}
   EXPECT_EQ(profile->association.clutter_map.range_cell, 2000.0);
   EXPECT_EQ(profile->association.clutter_map.azimuth_cell, 0.02);
   EXPECT_EQ(profile->association.clutter_map.cartesian_cell, 3000.0);
-  EXPECT_THAT(profile->branching.manoeuvre_models, ElementsAre("right", "singer"));
-  EXPECT_EQ(profile->initiation.gated_seed_beta, 0.2);
+  EXPECT_THAT(profile->point.branching.manoeuvre_models, ElementsAre("right", "singer"));
+  EXPECT_EQ(profile->point.initiation.gated_seed_beta, 0.2);
 }
 
 TEST(ProfileLoader, AcceptsEveryModeName) {
@@ -488,18 +529,18 @@ TEST(ProfileLoader, ManoeuvreAccelerationMustBePositive) {
               ::testing::HasSubstr("branching.ambiguity_beta"));
   const auto profile = with_branching("manoeuvre_accel_sigma: 35.5");
   ASSERT_TRUE(profile) << profile.error().message;
-  EXPECT_DOUBLE_EQ(profile->branching.manoeuvre_accel_sigma, 35.5);
+  EXPECT_DOUBLE_EQ(profile->point.branching.manoeuvre_accel_sigma, 35.5);
 }
 
 TEST(ProfileLoader, CoastOnLastMotionIsASwitch) {
   const auto profile = with_branching("coast_on_last_motion: true");
   ASSERT_TRUE(profile) << profile.error().message;
-  EXPECT_TRUE(profile->branching.coast_on_last_motion);
-  EXPECT_TRUE(TrackingProfile{}.branching.coast_on_last_motion);
+  EXPECT_TRUE(profile->point.branching.coast_on_last_motion);
+  EXPECT_TRUE(TrackingProfile{}.point.branching.coast_on_last_motion);
   // Off alone: the options that need it keep their (inert) defaults without an error.
   const auto off = with_branching("coast_on_last_motion: false");
   ASSERT_TRUE(off) << off.error().message;
-  EXPECT_FALSE(off->branching.coast_on_last_motion);
+  EXPECT_FALSE(off->point.branching.coast_on_last_motion);
   EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: 2\n"),
               ::testing::HasSubstr("branching.coast_on_last_motion"));
 }
@@ -508,8 +549,8 @@ TEST(ProfileLoader, LastMotionGateNeedsCoastOnLastMotion) {
   const auto profile =
       with_branching("coast_on_last_motion: true, non_manoeuvre_gate: last_motion");
   ASSERT_TRUE(profile) << profile.error().message;
-  EXPECT_EQ(profile->branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
-  EXPECT_EQ(TrackingProfile{}.branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
+  EXPECT_EQ(profile->point.branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
+  EXPECT_EQ(TrackingProfile{}.point.branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
   EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: false\n  non_manoeuvre_gate: "
                        "last_motion\n"),
               ::testing::HasSubstr("non_manoeuvre_gate: needs coast_on_last_motion: true"));
@@ -522,11 +563,11 @@ TEST(ProfileLoader, CoastSonsAndTheHeldMotionsNoiseNeedCoastOnLastMotion) {
       "coast_on_last_motion: true, coast_sons: 3, coast_son_doubt: 0.2, last_motion_accel_sigma: "
       "0.5");
   ASSERT_TRUE(profile) << profile.error().message;
-  EXPECT_EQ(profile->branching.coast_sons, 3);
-  EXPECT_DOUBLE_EQ(profile->branching.coast_son_doubt, 0.2);
-  EXPECT_DOUBLE_EQ(profile->branching.last_motion_accel_sigma, 0.5);
-  EXPECT_EQ(TrackingProfile{}.branching.coast_sons, 5);
-  EXPECT_DOUBLE_EQ(TrackingProfile{}.branching.last_motion_accel_sigma, 0.5);
+  EXPECT_EQ(profile->point.branching.coast_sons, 3);
+  EXPECT_DOUBLE_EQ(profile->point.branching.coast_son_doubt, 0.2);
+  EXPECT_DOUBLE_EQ(profile->point.branching.last_motion_accel_sigma, 0.5);
+  EXPECT_EQ(TrackingProfile{}.point.branching.coast_sons, 5);
+  EXPECT_DOUBLE_EQ(TrackingProfile{}.point.branching.last_motion_accel_sigma, 0.5);
   EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: false\n  coast_sons: 1\n"),
               ::testing::HasSubstr("coast_sons: needs coast_on_last_motion: true"));
   EXPECT_THAT(
@@ -541,9 +582,9 @@ TEST(ProfileLoader, CoastSonsAndTheHeldMotionsNoiseNeedCoastOnLastMotion) {
 TEST(ProfileLoader, DetectabilityChainReadsItsTwoProbabilities) {
   const auto profile = with_branching("detectability: {hide: 0.1, reveal: 0.5}");
   ASSERT_TRUE(profile) << profile.error().message;
-  EXPECT_DOUBLE_EQ(profile->branching.detectability.hide, 0.1);
-  EXPECT_DOUBLE_EQ(profile->branching.detectability.reveal, 0.5);
-  EXPECT_EQ(TrackingProfile{}.branching.detectability,
+  EXPECT_DOUBLE_EQ(profile->point.branching.detectability.hide, 0.1);
+  EXPECT_DOUBLE_EQ(profile->point.branching.detectability.reveal, 0.5);
+  EXPECT_EQ(TrackingProfile{}.point.branching.detectability,
             (config::DetectabilitySpec{.hide = 0.05, .reveal = 0.3}));
   EXPECT_THAT(error_of("branching:\n  detectability: {hide: 1.5}\n"),
               ::testing::HasSubstr("branching.detectability.hide"));
@@ -558,10 +599,10 @@ TEST(ProfileLoader, CoastSonWindowAndClutterAreaLastMotionNeedTheirOptions) {
       "coast_on_last_motion: true, coast_sons: 3, coast_son_looks: 6, last_motion_false_plots: "
       "0.3");
   ASSERT_TRUE(profile) << profile.error().message;
-  EXPECT_EQ(profile->branching.coast_son_looks, 6);
-  EXPECT_DOUBLE_EQ(profile->branching.last_motion_false_plots, 0.3);
-  EXPECT_EQ(TrackingProfile{}.branching.coast_son_looks, 8);
-  EXPECT_DOUBLE_EQ(TrackingProfile{}.branching.last_motion_false_plots, 0.3);
+  EXPECT_EQ(profile->point.branching.coast_son_looks, 6);
+  EXPECT_DOUBLE_EQ(profile->point.branching.last_motion_false_plots, 0.3);
+  EXPECT_EQ(TrackingProfile{}.point.branching.coast_son_looks, 8);
+  EXPECT_DOUBLE_EQ(TrackingProfile{}.point.branching.last_motion_false_plots, 0.3);
   EXPECT_THAT(error_of("branching:\n  coast_sons: 0\n  coast_son_looks: 6\n"),
               ::testing::HasSubstr("coast_son_looks: needs coast_sons > 0"));
   EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: false\n"
@@ -574,8 +615,8 @@ TEST(ProfileLoader, CoastSonWindowAndClutterAreaLastMotionNeedTheirOptions) {
 TEST(ProfileLoader, BranchConfirmationIsMOfNOrExistence) {
   const auto profile = with_branching("confirmation: m_of_n");
   ASSERT_TRUE(profile) << profile.error().message;
-  EXPECT_EQ(profile->branching.confirmation, ConfirmationMethod::kMOfN);
-  EXPECT_EQ(TrackingProfile{}.branching.confirmation, ConfirmationMethod::kExistence);
+  EXPECT_EQ(profile->point.branching.confirmation, ConfirmationMethod::kMOfN);
+  EXPECT_EQ(TrackingProfile{}.point.branching.confirmation, ConfirmationMethod::kExistence);
   EXPECT_THAT(error_of("branching:\n  confirmation: score\n"),
               ::testing::HasSubstr("branching.confirmation"));
 }

@@ -433,7 +433,7 @@ TEST_F(EndToEnd, SighupReloadsAValidProfileAndKeepsTheOldOneOtherwise) {
   tuned.replace(tuned.find("confirm_m: 3"), 12, "confirm_m: 2");
   std::ofstream(profile) << tuned;
   daemon.signal(SIGHUP);
-  ASSERT_TRUE(daemon.wait_for_log("changes track_life", 5s)) << daemon.log();
+  ASSERT_TRUE(daemon.wait_for_log("changes point.track_life", 5s)) << daemon.log();
   EXPECT_TRUE(daemon.running());
 
   // WHEN SIGTERM arrives THEN it exits 0 within a second

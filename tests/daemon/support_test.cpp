@@ -63,7 +63,7 @@ TEST(ProfileReload, OnlyAnIdentityChangeKeepsTheTracks) {
   EXPECT_EQ(restart_reason(before, renamed), "");
   config::TrackingProfile tuned = before;
   tuned.dimension = 3;
-  tuned.track_life = {};
+  tuned.point.track_life = {};
   tuned.association.gate_probability = 0.99;
   EXPECT_EQ(restart_reason(before, tuned), "dimension, association");
 }
@@ -100,9 +100,9 @@ TEST(ProfileReload, EverySectionRestartsTheTracksButIdentityAndInputLimits) {
        }},
       {"association", [](TrackingProfile& p) { p.association.k_best = 50; }},
       {"clutter_rejection", [](TrackingProfile& p) { p.clutter_rejection.enabled = true; }},
-      {"initiation", [](TrackingProfile& p) { p.initiation.max_speed = 400.0; }},
-      {"track_life", [](TrackingProfile& p) { p.track_life.confirm_m = 2; }},
-      {"branching", [](TrackingProfile& p) { p.branching.coast_sons = 2; }},
+      {"point.initiation", [](TrackingProfile& p) { p.point.initiation.max_speed = 400.0; }},
+      {"point.track_life", [](TrackingProfile& p) { p.point.track_life.confirm_m = 2; }},
+      {"point.branching", [](TrackingProfile& p) { p.point.branching.coast_sons = 2; }},
   };
   for (const auto& [name, change] : sections) {
     TrackingProfile after = before;

@@ -20,7 +20,7 @@ struct PointBranching {
 struct PointPlainJpda {
   static config::TrackingProfile profile() {
     config::TrackingProfile p = testing::test_profile();
-    p.branching.enabled = false;
+    p.point.branching.enabled = false;
     return p;
   }
 };

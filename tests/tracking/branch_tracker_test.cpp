@@ -28,25 +28,25 @@ config::TrackingProfile branch_profile() {
   p.mode_transition = {{1.0}};
   p.initial_mode_probabilities = {1.0};
   p.association.clutter_density = 1e-8;  // [1/m^2]
-  p.branching.manoeuvre_models = {"cv"};
-  p.branching.manoeuvre_accel_sigma = 100.0;
+  p.point.branching.manoeuvre_models = {"cv"};
+  p.point.branching.manoeuvre_accel_sigma = 100.0;
   // Paper 003's rules alone: the default's clutter-area options off (tests of each turn
   // them on).
-  p.branching.coast_on_last_motion = false;
-  p.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kUnion;
-  p.branching.last_motion_false_plots = 0.0;
-  p.branching.last_motion_accel_sigma = 0.0;
-  p.branching.confirmation = config::ConfirmationMethod::kMOfN;
-  p.branching.coast_sons = 0;
-  p.branching.coast_son_looks = 0;
-  p.branching.detectability.hide = 0.0;  // independent misses
+  p.point.branching.coast_on_last_motion = false;
+  p.point.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kUnion;
+  p.point.branching.last_motion_false_plots = 0.0;
+  p.point.branching.last_motion_accel_sigma = 0.0;
+  p.point.branching.confirmation = config::ConfirmationMethod::kMOfN;
+  p.point.branching.coast_sons = 0;
+  p.point.branching.coast_son_looks = 0;
+  p.point.branching.detectability.hide = 0.0;  // independent misses
   return p;
 }
 
 /// branch_profile() with a position-spread limit (12 m) that one missed scan exceeds.
 config::TrackingProfile suspending_profile() {
   config::TrackingProfile p = branch_profile();
-  p.track_life.delete_position_sigma = 12.0;
+  p.point.track_life.delete_position_sigma = 12.0;
   return p;
 }
 
@@ -265,7 +265,7 @@ TEST(BranchTracker, FatherNonManoeuvreUpdateDeletesSonsWithoutOne) {
 TEST(BranchTracker, SonWithANonManoeuvreUpdateBecomesAnIndependentFather) {
   // GIVEN confirmation needs 4 of 4 scans, so a son survives one update unconfirmed
   config::TrackingProfile profile = branch_profile();
-  profile.track_life.confirm_m = 4;
+  profile.point.track_life.confirm_m = 4;
   Script s(profile);
   for (int t = 0; t <= 3; ++t) s.scan(t, {{100.0 * t, 0.0}});
   ASSERT_EQ(s.frame.tracks.at(0).status, TrackStatus::kConfirmed);
@@ -357,7 +357,7 @@ TEST(BranchTracker, AtTheBranchCapTheLeastLikelyBranchIsPruned) {
   // GIVEN at most one branch per father, and two plots in track 1's manoeuvre gate, one
   // nearer its prediction (more probable)
   config::TrackingProfile profile = branch_profile();
-  profile.branching.max_branches_per_father = 1;
+  profile.point.branching.max_branches_per_father = 1;
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 150.0}, {400.0, -175.0}});
@@ -372,7 +372,7 @@ TEST(BranchTracker, AtTheBranchCapTheLeastLikelyBranchIsPruned) {
 
 TEST(BranchTracker, NoRoomLeftUnderMaxChildrenCreatesNoMoreSons) {
   config::TrackingProfile profile = branch_profile();
-  profile.branching.max_children = 1;
+  profile.point.branching.max_children = 1;
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 150.0}, {400.0, -175.0}});
@@ -416,7 +416,7 @@ TEST(BranchTracker, FatherTooUncertainToGateYieldsToItsSon) {
   // times it (the suspension before gating) below its prediction over two, and son 2
   // started in the scan it missed
   config::TrackingProfile profile = branch_profile();
-  profile.track_life.delete_position_sigma = 13.0;
+  profile.point.track_life.delete_position_sigma = 13.0;
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 150.0}});
@@ -438,7 +438,7 @@ TEST(BranchTracker, FatherTooUncertainToGateYieldsToItsSon) {
 TEST(BranchTracker, FatherSuspendedByItsUpdateStartsSonsFromItsLikelyPlots) {
   // GIVEN a position-spread limit that track 1's update with two plots 60 m apart exceeds
   config::TrackingProfile profile = branch_profile();
-  profile.track_life.delete_position_sigma = 14.5;
+  profile.point.track_life.delete_position_sigma = 14.5;
   Script s(profile);
   s.start();
   // WHEN both plots lie in its non-manoeuvre gate, each likelier than a miss
@@ -469,7 +469,7 @@ TEST(BranchTracker, FatherSuspendedByItsUpdateStartsSonsFromItsLikelyPlots) {
 TEST(BranchTracker, AmbiguousUpdateLetsTheSonsFromItsPlotsDecideWhileTheFatherIsReported) {
   // GIVEN ambiguity_beta 0.3 and two plots 60 m apart, each about half of track 1's weight
   config::TrackingProfile profile = branch_profile();
-  profile.branching.ambiguity_beta = 0.3;
+  profile.point.branching.ambiguity_beta = 0.3;
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 30.0}, {400.0, -30.0}});
@@ -495,7 +495,7 @@ TEST(BranchTracker, AmbiguousUpdateLetsTheSonsFromItsPlotsDecideWhileTheFatherIs
 TEST(BranchTracker, SonUpdatedWhenItsSiblingWinsBecomesATrackOfItsOwn) {
   // GIVEN track 1 undecided between two plots 60 m apart (two aircraft, one unseen so far)
   config::TrackingProfile profile = branch_profile();
-  profile.branching.ambiguity_beta = 0.3;
+  profile.point.branching.ambiguity_beta = 0.3;
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 30.0}, {400.0, -30.0}});
@@ -529,7 +529,7 @@ TEST(BranchTracker, AnotherTracksLikeliestPlotMakesNoAmbiguity) {
   // GIVEN ambiguity_beta 0.3 and two targets 10 m apart flying east side by side (a
   // formation): each track weighs both plots about half and half
   config::TrackingProfile profile = branch_profile();
-  profile.branching.ambiguity_beta = 0.3;
+  profile.point.branching.ambiguity_beta = 0.3;
   Script s(profile);
   int undecided = 0, sons = 0;
   for (int t = 0; t <= 8; ++t) {
@@ -548,7 +548,7 @@ TEST(BranchTracker, AnotherTracksLikeliestPlotMakesNoAmbiguity) {
 TEST(BranchTracker, UndecidedFatherWhoseSonsAreGoneTakesPlotsAgain) {
   // GIVEN track 1 undecided between two plots (as above)
   config::TrackingProfile profile = branch_profile();
-  profile.branching.ambiguity_beta = 0.3;
+  profile.point.branching.ambiguity_beta = 0.3;
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 30.0}, {400.0, -30.0}});
@@ -578,7 +578,7 @@ TEST(BranchTracker, SuspendedFatherWithoutBranchesIsDeletedAfterItsMisses) {
     s.scan(t, {});
     if (!s.events(TrackEventType::kDeleted).empty()) deleted_at = t;
   }
-  EXPECT_EQ(deleted_at, 3 + profile.track_life.delete_confirmed_misses + profile.initiation.n);
+  EXPECT_EQ(deleted_at, 3 + profile.point.track_life.delete_confirmed_misses + profile.point.initiation.n);
   ASSERT_EQ(s.reported(), (std::vector<std::int64_t>{1}));
   EXPECT_EQ(s.frame.tracks[0].status, TrackStatus::kDeleted);
 }
@@ -708,7 +708,7 @@ config::TrackingProfile turning_profile(bool coast_on_last_motion) {
                              .turn_rate = 0.5});
   p.mode_transition = {{0.9, 0.1}, {0.1, 0.9}};
   p.initial_mode_probabilities = {0.9, 0.1};
-  p.branching.coast_on_last_motion = coast_on_last_motion;
+  p.point.branching.coast_on_last_motion = coast_on_last_motion;
   return p;
 }
 
@@ -751,9 +751,9 @@ TEST(BranchTracker, FatherThatMissedTakesPlotsOnlyOnItsLastMotion) {
 /// uniform clutter density [1/m^2].
 config::TrackingProfile last_motion_where_clutter(double clutter) {
   config::TrackingProfile p = turning_profile(true);
-  p.track_life.confirmation = config::ConfirmationMethod::kMOfN;
+  p.point.track_life.confirmation = config::ConfirmationMethod::kMOfN;
   p.association.clutter_density = clutter;
-  p.branching.last_motion_false_plots = 0.3;
+  p.point.branching.last_motion_false_plots = 0.3;
   return p;
 }
 
@@ -788,7 +788,7 @@ TEST(BranchTracker, FatherInAClutterAreaIsUpdatedOnItsLastMotion) {
   for (const double clutter : {1e-8, 1e-4}) {
     SCOPED_TRACE(clutter);
     config::TrackingProfile profile = last_motion_where_clutter(clutter);
-    profile.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kLastMotion;
+    profile.point.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kLastMotion;
     Script s(profile);
     s.start();
     s.scan(4, {{396.0, 35.0}});
@@ -813,10 +813,10 @@ TEST(BranchTracker, FatherMissedInAClutterAreaKeepsItsExistenceOnTheDetectabilit
     SCOPED_TRACE(hide);
     config::TrackingProfile profile = branch_profile();
     profile.association.clutter_density = 1e-6;
-    profile.track_life.confirmation = config::ConfirmationMethod::kExistence;
-    profile.track_life.delete_confirmed_misses = 6;
-    profile.branching.coast_on_last_motion = true;
-    profile.branching.detectability = {.hide = hide, .reveal = 0.3};
+    profile.point.track_life.confirmation = config::ConfirmationMethod::kExistence;
+    profile.point.track_life.delete_confirmed_misses = 6;
+    profile.point.branching.coast_on_last_motion = true;
+    profile.point.branching.detectability = {.hide = hide, .reveal = 0.3};
     Script s(profile);
     s.start();
     for (int t = 4; t <= 7; ++t) s.scan(t, {});
@@ -843,7 +843,7 @@ TEST(BranchTracker, MissingFatherCoastsOnItsLastMotionWhileItsSonFollowsTheTurn)
   for (const bool on : {true, false}) {
     SCOPED_TRACE(on ? "coast_on_last_motion" : "IMM-JPDA coast");
     config::TrackingProfile profile = turning_profile(on);
-    profile.branching.manoeuvre_accel_sigma = 10.0;
+    profile.point.branching.manoeuvre_accel_sigma = 10.0;
     Script s(profile);
     s.start();
     s.scan(4, {});
@@ -878,7 +878,7 @@ TEST(BranchTracker, LastMotionGateLeavesATurnModesPlotToASon) {
   for (const bool last_motion : {true, false}) {
     SCOPED_TRACE(last_motion ? "non_manoeuvre_gate last_motion" : "union");
     config::TrackingProfile profile = turning_profile(true);
-    if (last_motion) profile.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kLastMotion;
+    if (last_motion) profile.point.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kLastMotion;
     Script s(profile);
     s.start();
     s.scan(4, {{385.0, 60.0}});
@@ -904,9 +904,9 @@ TEST(BranchTracker, FatherOnItsLastMotionWeighsItsPlotsOnIt) {
     SCOPED_TRACE(last_motion ? "non_manoeuvre_gate last_motion" : "union");
     config::TrackingProfile profile = branch_profile();
     profile.motion_models[0].accel_sigma = 50.0;
-    profile.branching.coast_on_last_motion = true;
-    profile.branching.last_motion_accel_sigma = 0.5;
-    if (last_motion) profile.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kLastMotion;
+    profile.point.branching.coast_on_last_motion = true;
+    profile.point.branching.last_motion_accel_sigma = 0.5;
+    if (last_motion) profile.point.branching.non_manoeuvre_gate = config::NonManoeuvreGate::kLastMotion;
     Script s(profile);
     s.start();
     s.scan(4, {{400.0, 0.0}, {400.0, 80.0}});
@@ -928,8 +928,8 @@ TEST(BranchTracker, SonConfirmedOnExistenceWeighsItsPlotsAgainstTheClutter) {
   for (const double clutter : {1e-8, 1e-5}) {
     SCOPED_TRACE(clutter);
     config::TrackingProfile profile = branch_profile();
-    profile.track_life.confirmation = config::ConfirmationMethod::kMOfN;  // the father's
-    profile.branching.confirmation = config::ConfirmationMethod::kExistence;
+    profile.point.track_life.confirmation = config::ConfirmationMethod::kMOfN;  // the father's
+    profile.point.branching.confirmation = config::ConfirmationMethod::kExistence;
     profile.association.clutter_density = clutter;
     Script s(profile);
     s.start();
@@ -954,11 +954,11 @@ TEST(BranchTracker, SonConfirmedOnExistenceWeighsItsPlotsAgainstTheClutter) {
 // on existence and up to 3 coast sons per father.
 config::TrackingProfile coast_son_profile() {
   config::TrackingProfile p = branch_profile();
-  p.track_life.confirmation = config::ConfirmationMethod::kMOfN;
+  p.point.track_life.confirmation = config::ConfirmationMethod::kMOfN;
   p.association.clutter_density = 1e-4;
-  p.branching.coast_on_last_motion = true;
-  p.branching.confirmation = config::ConfirmationMethod::kExistence;
-  p.branching.coast_sons = 3;
+  p.point.branching.coast_on_last_motion = true;
+  p.point.branching.confirmation = config::ConfirmationMethod::kExistence;
+  p.point.branching.coast_sons = 3;
   return p;
 }
 
@@ -1031,8 +1031,8 @@ TEST(BranchTracker, DetectabilityChainCountsMaskedMissesOnlyInAClutterArea) {
   };
   const auto run = [](double false_plots, double hide) {
     config::TrackingProfile profile = coast_son_profile();
-    profile.branching.last_motion_false_plots = false_plots;
-    profile.branching.detectability.hide = hide;
+    profile.point.branching.last_motion_false_plots = false_plots;
+    profile.point.branching.detectability.hide = hide;
     Script s(profile);
     s.split_coast_son();
     Run r;
@@ -1071,7 +1071,7 @@ TEST(BranchTracker, ConfirmedSonWaitsUntilItsSupportPassesItsFathers) {
   // a clutter density of 15 false plots per km^2, and M-of-N confirmation
   config::TrackingProfile profile = branch_profile();
   profile.association.clutter_density = 1.5e-5;
-  profile.track_life.confirmation = config::ConfirmationMethod::kMOfN;
+  profile.point.track_life.confirmation = config::ConfirmationMethod::kMOfN;
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 150.0}});
@@ -1108,8 +1108,8 @@ TEST(BranchTracker, CoastSonNotConfirmedWithinItsWindowIsPruned) {
   // GIVEN coast son 2 of CoastSonKeepsTheLastMotionWhileFalseAlarmsPullTheFather (t = 6),
   // with branching.coast_son_looks 2 and misses that would not delete it before 10 looks
   config::TrackingProfile profile = coast_son_profile();
-  profile.track_life.delete_confirmed_misses = 10;
-  profile.branching.coast_son_looks = 2;
+  profile.point.track_life.delete_confirmed_misses = 10;
+  profile.point.branching.coast_son_looks = 2;
   Script s(profile);
   s.split_coast_son();
   ASSERT_EQ(s.events(TrackEventType::kBranchCreated).size(), 1u);
@@ -1131,7 +1131,7 @@ TEST(BranchTracker, CoastSonNotConfirmedWithinItsWindowIsPruned) {
 TEST(BranchTracker, SwitchedOffItIsPlainImmJpda) {
   // GIVEN the same script with branching off
   config::TrackingProfile profile = branch_profile();
-  profile.branching.enabled = false;
+  profile.point.branching.enabled = false;
   Script s(profile);
   s.start();
   s.scan(4, {{400.0, 150.0}});

@@ -110,7 +110,7 @@ TEST(PlotCloud, RandomPlotsFillTheTentativeCapacityAndNoMore) {
   // density chains of them complete by the thousand)
   config::TrackingProfile profile;
   profile.identity = {"capacity-test", "1", ""};
-  profile.initiation.max_tentative = 300;
+  profile.point.initiation.max_tentative = 300;
   profile.association.max_exact_cluster_size = 4;  // k-best up to 8 tracks, PDA above
   auto pipeline = Pipeline::create(profile);
   ASSERT_TRUE(pipeline);

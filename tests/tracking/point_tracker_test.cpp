@@ -91,9 +91,9 @@ TEST(PointTracker, ExistenceConfirmationKeepsClutterChainsFromConfirming) {
                       target(2, {10000.0, -30000.0, 0.0}, {0.0, 250.0, 0.0}),
                       target(3, {30000.0, 30000.0, 0.0}, {-150.0, -150.0, 0.0})};
   config::TrackingProfile m_of_n = test_profile();
-  m_of_n.track_life.confirmation = config::ConfirmationMethod::kMOfN;
+  m_of_n.point.track_life.confirmation = config::ConfirmationMethod::kMOfN;
   config::TrackingProfile existence = test_profile();
-  existence.track_life.confirmation = config::ConfirmationMethod::kExistence;
+  existence.point.track_life.confirmation = config::ConfirmationMethod::kExistence;
   double false_m_of_n = 0.0, false_existence = 0.0;
   for (const std::uint64_t seed : {1, 2}) {
     const auto plain = track_scenario(scenario, seed, m_of_n, 200.0);
@@ -258,8 +258,8 @@ TEST(PointTracker, FormationMembersInEachOthersGatesGetTracksOfTheirOwn) {
   wingman.birth = 20.0;
   scenario.targets = {target(1, start[0], velocity), wingman};
   config::TrackingProfile old_rule = test_profile();
-  old_rule.initiation.gated_seed_beta = 1.0;  // only plots in no gate seed chains
-  old_rule.branching.ambiguity_beta = 1.0;    // and the lead never splits on two plots
+  old_rule.point.initiation.gated_seed_beta = 1.0;  // only plots in no gate seed chains
+  old_rule.point.branching.ambiguity_beta = 1.0;    // and the lead never splits on two plots
   int resolved = 0, resolved_old_rule = 0, distinct_at_end = 0;
   for (std::uint64_t seed = 1; seed <= 8; ++seed) {
     // WHEN tracked with the default rule and with the old one
@@ -327,7 +327,7 @@ TEST(PointTracker, StationaryAndSlowTargetsSeenByAPreciseRadarAreTracked) {
   // AND a 10 m/s floor on the speed of initiating pairs (the default before) lost them all:
   // a pair's 18 m of noise slack over 4 s reaches 4.5 m/s, not 10
   config::TrackingProfile floored = test_profile();
-  floored.initiation.min_speed = 10.0;
+  floored.point.initiation.min_speed = 10.0;
   const auto lost = track_scenario(scenario, 4, floored, 50.0);
   for (const auto& truth : lost.summary.continuity) EXPECT_EQ(truth.frames_tracked, 0);
 }

@@ -259,6 +259,17 @@ struct InputLimitsSpec {
   bool operator==(const InputLimitsSpec&) const = default;
 };
 
+/// The point tracker's own sections (mode: point): logic-based initiation, track life and
+/// branch tracking (paper 003).
+struct PointSpec {
+  InitiationSpec initiation;
+  TrackLifeSpec track_life;
+  BranchingSpec branching;
+  bool operator==(const PointSpec&) const = default;
+};
+
+/// A tracking profile: the sections every mode reads (identity, mode, measurement, antenna,
+/// motion models, association basics, preprocessing, input limits), then each mode's own.
 struct TrackingProfile {
   ProfileIdentity identity;
   TrackingMode mode = TrackingMode::kPoint;
@@ -290,10 +301,8 @@ struct TrackingProfile {
   std::vector<double> initial_mode_probabilities = {0.8, 0.1, 0.1};
   AssociationSpec association;
   ClutterRejectionSpec clutter_rejection;
-  InitiationSpec initiation;
-  TrackLifeSpec track_life;
-  BranchingSpec branching;
   InputLimitsSpec input_limits;
+  PointSpec point;  // mode: point
   bool operator==(const TrackingProfile&) const = default;
 };
 
