@@ -130,7 +130,11 @@ void systematic_resample(std::span<const Particle> in, std::span<const double> w
   for (std::size_t k = 0; k < in.size(); ++k) {
     cumulative += weights[k];
     const double reach = cumulative * count - u0;  // outputs n with n < reach
-    const auto end = std::min(size, static_cast<std::size_t>(std::max(0.0, std::ceil(reach))));
+    std::size_t end = 0;                           // ceil(reach), clamped to [0, size]
+    if (reach > 0.0) {
+      end = static_cast<std::size_t>(reach);
+      end = std::min(size, end + (static_cast<double>(end) < reach ? 1 : 0));
+    }
     *(n < size ? &out[n] : &spare) = in[k];
     for (std::size_t t = n + 1; t < end; ++t) out[t] = in[k];
     n = std::max(n, end);
