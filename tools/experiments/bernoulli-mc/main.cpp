@@ -36,6 +36,7 @@ struct FilterStats {  // sums over runs, per scan
   std::vector<int> reported_present;        // runs reporting while the target exists
   double seconds = 0.0, cpu_seconds = 0.0;  // wall clock and this thread's CPU time
   int born_in_time = 0, died_in_time = 0;
+  int false_reports = 0;  // (run, scan) reported while the target does not exist
   FilterStats(std::string n, int scans)
       : name(std::move(n)),
         position_se(scans),
@@ -88,6 +89,7 @@ void run_filter(Filter& filter, const std::vector<Paper001Scan>& scans, const Op
     const bool present = scans[k].target_present, reported = out[k].target_reported;
     stats.q_sum[k] += out[k].existence;
     stats.cardinality_error[k] += present != reported ? 1.0 : 0.0;
+    if (reported && !present) ++stats.false_reports;
     const int kk = static_cast<int>(k);
     if (reported && kk >= o.birth_scan && first_report < 0) first_report = kk;
     if (!reported && kk > o.death_scan && first_drop < 0) first_drop = kk;
@@ -109,9 +111,10 @@ void print(const std::vector<FilterStats>& all, const Options& o, int scans) {
   const bool dies = o.death_scan < scans - 1;
   std::printf(
       "| filter | position ARMSE [m] | velocity ARMSE [m/s] | mean cardinality error |"
-      " missed scans | q > 0.5 within 3 scans of birth |%s run time [ms], wall / CPU |\n",
+      " missed scans | false-report scans | q > 0.5 within 3 scans of birth |%s run time [ms], "
+      "wall / CPU |\n",
       dies ? " q < 0.5 within 3 scans of death |" : "");
-  std::printf("|---|---|---|---|---|---|%s---|\n", dies ? "---|" : "");
+  std::printf("|---|---|---|---|---|---|---|%s---|\n", dies ? "---|" : "");
   for (const FilterStats& s : all) {
     double pse = 0, vse = 0, card = 0;
     int n = 0, present = 0;
@@ -122,9 +125,9 @@ void print(const std::vector<FilterStats>& all, const Options& o, int scans) {
       card += s.cardinality_error[k];
       if (k >= o.birth_scan && k <= o.death_scan) present += o.runs;
     }
-    std::printf("| %s | %.2f | %.2f | %.4f | %d of %d | %d of %d |", s.name.c_str(), rmse(pse, n),
-                rmse(vse, n), card / (o.runs * scans), present - n, present, s.born_in_time,
-                o.runs);
+    std::printf("| %s | %.2f | %.2f | %.4f | %d of %d | %d of %d | %d of %d |", s.name.c_str(),
+                rmse(pse, n), rmse(vse, n), card / (o.runs * scans), present - n, present,
+                s.false_reports, o.runs * scans - present, s.born_in_time, o.runs);
     if (dies) std::printf(" %d of %d |", s.died_in_time, o.runs);
     std::printf(" %.2f / %.2f |\n", 1e3 * s.seconds / o.runs, 1e3 * s.cpu_seconds / o.runs);
   }
