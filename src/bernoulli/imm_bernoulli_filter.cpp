@@ -157,7 +157,10 @@ void ImmBernoulliFilter::estimate_and_resample(std::size_t n,
     weight_[k] *= 1.0 - pd + pd * ratio_[k];
     sum += weight_[k];
   }
-  for (std::size_t k = 0; k < n; ++k) weight_[k] = sum > 0.0 ? weight_[k] / sum : 1.0 / n;
+  const double scale = sum > 0.0 ? 1.0 / sum : 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    weight_[k] = sum > 0.0 ? weight_[k] * scale : 1.0 / static_cast<double>(n);
+  }
   // Model probabilities as sums of weights, per-model moments in one pass.
   std::array<double, kMaxModels> mass{};
   std::array<Eigen::Vector4d, kMaxModels> first;

@@ -188,7 +188,10 @@ void MmBernoulliFilter::recurse(double dt, BernoulliEstimate& estimate) noexcept
       weight_[j][k] *= 1.0 - pd + pd * ratio_[j][k];
       sum += weight_[j][k];
     }
-    for (std::size_t k = 0; k < n; ++k) weight_[j][k] = sum > 0.0 ? weight_[j][k] / sum : 1.0 / n;
+    const double scale = sum > 0.0 ? 1.0 / sum : 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      weight_[j][k] = sum > 0.0 ? weight_[j][k] * scale : 1.0 / static_cast<double>(n);
+    }
     const std::span<const Particle> cloud(work_[j].data(), n);
     const std::span<const double> w(weight_[j].data(), n);
     weighted_moments(cloud, w, means[j], covariances[j]);

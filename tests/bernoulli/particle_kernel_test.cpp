@@ -32,7 +32,7 @@ TEST(ParticleKernel, DistanceMatchesExactRangeAndAzimuthFromAMovingPlatform) {
   ASSERT_TRUE(make_polar_plot(origin, range, azimuth, sr, sa, kKappa, 50.0, plot));
   // WHEN particles lie a few sigma off in range and azimuth THEN the distance is the exact one
   for (const double dr : {-20.0, 0.0, 13.0}) {
-    for (const double da : {-0.015, -0.004, 0.0, 0.009}) {
+    for (const double da : {-0.2, -0.015, -0.004, 0.0, 0.009, 0.06}) {
       const double r = range + dr, a = azimuth + da;
       const double x = origin.x() + r * std::sin(a), y = origin.y() + r * std::cos(a);
       const double exact_r = std::hypot(x - origin.x(), y - origin.y());
