@@ -15,9 +15,13 @@
 #   --seed S   first seed (default 1): runs use S, S+1, ..., S+N-1
 #   --every K  per-scan rows every K scans (default 5; 1 prints every scan)
 # Columns: ARMSE over the (run, scan) pairs where the target exists and is reported
-# (q > 0.5); cardinality error = mean over runs and scans of |reported - exists|; missed
-# scans = target exists, not reported (scan 0 always: births need a previous scan; with
-# plot pairs scan 1 too); run time = one 100-scan run, filter construction included, wall
+# (q > 0.5) within 1 km of it; off-target reports = reported while the target exists but
+# more than 1 km from it (a false track from clutter, left out of the RMSE); cardinality
+# error = mean over runs and scans of |reported - exists|; missed scans = target exists,
+# not reported (scan 0 always: births need a previous scan; with plot pairs scan 1 too);
+# false-report scans = reported while no target exists; birth / death: the first report on
+# the target within 3 scans of its first scan, the first scan without a report within 3
+# scans after its last; run time = one 100-scan run, filter construction included, wall
 # clock and the thread's CPU time (the machine may be shared).
 set -euo pipefail
 
