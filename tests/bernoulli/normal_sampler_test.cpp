@@ -8,7 +8,7 @@
 namespace skytrack::bernoulli {
 namespace {
 
-TEST(NormalSampler, MomentsAndTailsOfAStandardNormal) {
+TEST(BernoulliNormalSampler, MomentsAndTailsOfAStandardNormal) {
   NormalSampler rng(7);
   constexpr int kDraws = 400000;
   double sum = 0, sum2 = 0, sum4 = 0;
@@ -29,7 +29,7 @@ TEST(NormalSampler, MomentsAndTailsOfAStandardNormal) {
   EXPECT_NEAR(static_cast<double>(beyond_3) / kDraws, 0.0026998, 0.0004);
 }
 
-TEST(NormalSampler, SameSeedSameDrawsOtherSeedOtherDraws) {
+TEST(BernoulliNormalSampler, SameSeedSameDrawsOtherSeedOtherDraws) {
   NormalSampler a(42), b(42), c(43);
   int differ = 0;
   for (int i = 0; i < 1000; ++i) {
@@ -40,7 +40,7 @@ TEST(NormalSampler, SameSeedSameDrawsOtherSeedOtherDraws) {
   EXPECT_GT(differ, 990);
 }
 
-TEST(NormalSampler, UniformAndIndexStayInRange) {
+TEST(BernoulliNormalSampler, UniformAndIndexStayInRange) {
   NormalSampler rng(3);
   double sum = 0;
   for (int i = 0; i < 100000; ++i) {

@@ -14,7 +14,7 @@ namespace {
 
 constexpr double kKappa = 20.0 / (std::numbers::pi * 25000.0);  // the paper's 2.5465e-4
 
-TEST(ParticleKernel, LikelihoodRatioAtThePlotIsThePeakDensityOverClutter) {
+TEST(BernoulliParticleKernel, LikelihoodRatioAtThePlotIsThePeakDensityOverClutter) {
   ScanPlot plot;
   ASSERT_TRUE(make_polar_plot({0, 0}, 20000.0, 0.5, 5.0, 3e-3, kKappa, 50.0, plot));
   // g peak 1 / (2 pi 5 m 3 mrad) = 10.61 per m rad, over kappa 2.5465e-4: 41667
@@ -24,7 +24,7 @@ TEST(ParticleKernel, LikelihoodRatioAtThePlotIsThePeakDensityOverClutter) {
               1e-9 * expected);
 }
 
-TEST(ParticleKernel, DistanceMatchesExactRangeAndAzimuthFromAMovingPlatform) {
+TEST(BernoulliParticleKernel, DistanceMatchesExactRangeAndAzimuthFromAMovingPlatform) {
   // GIVEN a platform away from the origin and a plot at azimuth 2.8 rad (south-east)
   const Eigen::Vector2d origin(-3000.0, 1500.0);
   const double range = 18000.0, azimuth = 2.8, sr = 5.0, sa = 3e-3;
@@ -48,7 +48,7 @@ TEST(ParticleKernel, DistanceMatchesExactRangeAndAzimuthFromAMovingPlatform) {
             0.0);
 }
 
-TEST(ParticleKernel, CartesianPlotRatio) {
+TEST(BernoulliParticleKernel, CartesianPlotRatio) {
   ScanPlot plot;
   ASSERT_TRUE(make_cartesian_plot({100.0, 200.0}, 10.0, 20.0, 1e-8, 50.0, plot));
   // d^2 = (10/10)^2 + (20/20)^2 = 2 -> peak e^-1, peak 1 / (2 pi 200 1e-8)
@@ -58,7 +58,7 @@ TEST(ParticleKernel, CartesianPlotRatio) {
   EXPECT_FALSE(make_polar_plot({0, 0}, 100.0, 0.1, 0.0, 1e-3, kKappa, 50.0, plot));
 }
 
-TEST(ParticleKernel, GatedAccumulationEqualsTheSumOverEveryPlot) {
+TEST(BernoulliParticleKernel, GatedAccumulationEqualsTheSumOverEveryPlot) {
   NormalSampler rng(5);
   std::vector<ScanPlot> plots;
   for (int i = 0; i < 30; ++i) {
@@ -86,7 +86,7 @@ TEST(ParticleKernel, GatedAccumulationEqualsTheSumOverEveryPlot) {
   EXPECT_GT(total, 0.0);  // the test saw particles in a gate
 }
 
-TEST(ParticleKernel, NoiseFreeDynamicsMatchTheCoordinatedTurnModel) {
+TEST(BernoulliParticleKernel, NoiseFreeDynamicsMatchTheCoordinatedTurnModel) {
   const StateLayout layout{};
   for (const double w : {0.0, -0.1, 0.07}) {
     const ModelDynamics m = make_dynamics({w, 0.0, 1}, 2.0);
@@ -104,7 +104,7 @@ TEST(ParticleKernel, NoiseFreeDynamicsMatchTheCoordinatedTurnModel) {
   }
 }
 
-TEST(ParticleKernel, ProcessNoiseIsDiscreteWhiteAcceleration) {
+TEST(BernoulliParticleKernel, ProcessNoiseIsDiscreteWhiteAcceleration) {
   // Var(x) = (T^2/2 sigma)^2, Var(vx) = (T sigma)^2, Cov = T^3/2 sigma^2 with T 1, sigma 5
   const ModelDynamics m = make_dynamics({0.0, 5.0, 1}, 1.0);
   NormalSampler rng(9);
@@ -122,7 +122,7 @@ TEST(ParticleKernel, ProcessNoiseIsDiscreteWhiteAcceleration) {
   EXPECT_NEAR(sxv / kDraws, 12.5, 0.2);
 }
 
-TEST(ParticleKernel, SystematicResamplingCopiesByWeight) {
+TEST(BernoulliParticleKernel, SystematicResamplingCopiesByWeight) {
   const std::vector<Particle> in{{1, 0, 0, 0}, {2, 0, 0, 0}, {3, 0, 0, 0}};
   std::vector<Particle> out(4);
   systematic_resample(in, std::vector<double>{0.0, 1.0, 0.0}, 0.3, out);
@@ -134,7 +134,7 @@ TEST(ParticleKernel, SystematicResamplingCopiesByWeight) {
   EXPECT_EQ(out[3].x, 3.0);
 }
 
-TEST(ParticleKernel, WeightedMomentsByHand) {
+TEST(BernoulliParticleKernel, WeightedMomentsByHand) {
   // x in {10000, 10004} with weights 0.25, 0.75: mean 10003, variance 3
   const std::vector<Particle> in{{10000, 1, 0, 0}, {10004, 1, 2, 0}};
   Eigen::Vector4d mean;
