@@ -82,8 +82,11 @@ std::size_t MmBernoulliFilter::predict_model(int j, double survival_mass, double
   std::size_t n = 0;
   double cumulative = 0.0;
   const double offset = rng_.uniform();
+  int last_source = 0;  // the last model with a share: it fills what rounding leaves
   for (int i = 0; i < m && survivors > 0; ++i) {
-    cumulative += spec_.transition[i][j] * mu_[i] / mu_predicted[j];
+    const double share = spec_.transition[i][j] * mu_[i] / mu_predicted[j];
+    if (share > 0.0) last_source = i;
+    cumulative += share;
     const auto end = std::min(
         survivors, static_cast<std::size_t>(std::max(0.0, cumulative * survivors + offset)));
     if (end <= n) continue;
@@ -98,7 +101,7 @@ std::size_t MmBernoulliFilter::predict_model(int j, double survival_mass, double
     }
   }
   for (; n < survivors; ++n) {  // rounding left a slot: the last model fills it
-    const std::vector<Particle>& source = posterior_[m - 1];
+    const std::vector<Particle>& source = posterior_[last_source];
     work[n] = source[rng_.index(static_cast<std::uint32_t>(source.size()))];
     propagate(dynamics, work[n], rng_);
   }

@@ -98,6 +98,21 @@ TEST(MmBernoulliFilter, PlotPairsFindATargetBornInATurnWithoutAVelocityPrior) {
   EXPECT_LT(std::hypot(e[0], e[2]), 250.0);
 }
 
+TEST(MmBernoulliFilter, ModelsWithoutBirthMassStayOutOfTheEstimate) {
+  // GIVEN newborns only in CV: the CT clouds are empty until the Markov chain feeds them
+  BernoulliSpec spec;
+  spec.birth_model_probabilities = {1.0, 0.0, 0.0};
+  const std::vector<Paper001Scan> scans = simulate_paper001(Paper001Options{.seed = 12});
+  MmBernoulliFilter filter(spec);
+  const std::vector<BernoulliEstimate> out = run(filter, scans);
+  for (std::size_t k = 2; k < 60; ++k) {
+    ASSERT_TRUE(out[k].mean.allFinite());
+    if (!out[k].target_reported) continue;
+    const Eigen::Vector4d e = out[k].mean - scans[k].truth;
+    EXPECT_LT(std::hypot(e[0], e[2]), 250.0) << "scan " << k;
+  }
+}
+
 TEST(MmBernoulliFilter, SameSeedSameOutput) {
   const std::vector<Paper001Scan> scans = simulate_paper001(Paper001Options{.seed = 2});
   MmBernoulliFilter a{BernoulliSpec{}}, b{BernoulliSpec{}};
