@@ -52,6 +52,7 @@ BernoulliEstimate ImmBernoulliFilter::begin_scan(double time, int rejected) noex
   estimate.plots_rejected = rejected;
   estimate.plots_used = static_cast<int>(history_.current().size());
   if (started_) recurse(time - last_time_, estimate);
+  if (estimate.target_reported && !last_.target_reported) ++estimate.report_epoch;
   started_ = true;
   last_time_ = time;
   history_.advance(time);

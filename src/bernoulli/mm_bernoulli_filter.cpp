@@ -60,6 +60,7 @@ BernoulliEstimate MmBernoulliFilter::begin_scan(double time, int rejected) noexc
   estimate.plots_rejected = rejected;
   estimate.plots_used = static_cast<int>(history_.current().size());
   if (started_) recurse(time - last_time_, estimate);  // the first scan only seeds births
+  if (estimate.target_reported && !last_.target_reported) ++estimate.report_epoch;
   started_ = true;
   last_time_ = time;
   history_.advance(time);

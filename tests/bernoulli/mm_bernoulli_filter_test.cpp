@@ -82,6 +82,9 @@ TEST(MmBernoulliFilter, ExistenceRisesAfterBirthAndFallsAfterDeath) {
   EXPECT_TRUE(out[13].target_reported);
   EXPECT_LT(out[73].existence, 0.5);
   for (int k = 74; k < 100; ++k) EXPECT_FALSE(out[k].target_reported) << "scan " << k;
+  EXPECT_EQ(out[9].report_epoch, 0u);  // one target, one epoch (this seed has no false track)
+  EXPECT_EQ(out[13].report_epoch, 1u);
+  EXPECT_EQ(out[99].report_epoch, 1u);
 }
 
 TEST(MmBernoulliFilter, PlotPairsFindATargetBornInATurnWithoutAVelocityPrior) {

@@ -3,6 +3,7 @@
 // every batch) and, meaningful while q exceeds the threshold, the model-probability-weighted
 // state (paper 001, eq. 28) and the model probabilities (eq. 17).
 #include <array>
+#include <cstdint>
 #include <span>
 
 #include <Eigen/Core>
@@ -24,6 +25,9 @@ struct BernoulliEstimate {
   double time = 0.0;             // [s] the scan's
   double existence = 0.0;        // q_k
   bool target_reported = false;  // q_k > existence_threshold
+  /// How many times q has risen above the threshold since the start: a new value is a new
+  /// target (the pipeline gives it a new track number), the same value the same track.
+  std::uint64_t report_epoch = 0;
   /// Eq. 28: sum_m mu_m x_m, [x, vx, y, vy] [m, m/s] in the tracking frame, and the mixture
   /// covariance sum_m mu_m (P_m + (x_m - x)(x_m - x)'). Zero before any particle exists.
   Eigen::Vector4d mean = Eigen::Vector4d::Zero();
