@@ -53,7 +53,9 @@ std::vector<Paper001Scan> simulate_paper001(const Paper001Options& options) {
     const int clutter = clutter_count(engine);
     for (int c = 0; c < clutter; ++c) {
       PolarPlot2d plot = noise_model;
-      plot.azimuth = std::numbers::pi * uniform(engine);
+      // The paper's bearing arctan(y/x) in [0, pi] is the half-plane y >= 0, azimuths
+      // [-pi/2, pi/2] clockwise from north: the target stays inside it (y >= 4.8 km).
+      plot.azimuth = std::numbers::pi * (uniform(engine) - 0.5);
       plot.range = options.max_range * uniform(engine);
       scan.plots.push_back(plot);
     }

@@ -1,10 +1,10 @@
 #pragma once
 // The simulated experiment of paper 001 (§4): a fast target manoeuvring CV - CT - CV - CT -
 // CV for 100 s, seen by a fixed range/bearing sensor at the origin with P_D = 0.98 and a
-// Poisson number (mean 20) of clutter plots uniform over azimuth [0, pi] x range
-// [0, 25000] m per 1 s scan. For tests, the benchmark and tools/experiments/bernoulli-mc.
-// The paper's bearing is arctan(y/x); here azimuth is clockwise from north (DESIGN.md),
-// which mirrors the clutter half-plane and leaves everything else as printed.
+// Poisson number (mean 20) of clutter plots uniform over a half disc of 25 km per 1 s scan.
+// For tests, the benchmark and tools/experiments/bernoulli-mc. The paper's bearing is
+// arctan(y/x) in [0, pi], the half-plane north of the sensor; in skytrack's azimuth
+// (clockwise from north, DESIGN.md) that is [-pi/2, pi/2], which the clutter covers.
 #include <cstdint>
 #include <vector>
 
