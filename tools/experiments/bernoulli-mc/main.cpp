@@ -145,9 +145,13 @@ void print(const std::vector<FilterStats>& all, const Options& o, int scans) {
     if (dies) std::printf(" %d of %d |", s.died_in_time, o.runs);
     std::printf(" %.2f / %.2f |\n", 1e3 * s.seconds / o.runs, 1e3 * s.cpu_seconds / o.runs);
   }
-  std::printf("\nPer scan (every %d-th; RMSE over the runs reporting the target):\n\n| scan |",
-              o.every);
-  for (const FilterStats& s : all) std::printf(" %s pos / vel RMSE, mean q |", s.name.c_str());
+  std::printf(
+      "\nPer scan (every %d-th; RMSE over the runs reporting the target on it; mean q;"
+      " cardinality error = fraction of runs with |reported - exists| = 1):\n\n| scan |",
+      o.every);
+  for (const FilterStats& s : all) {
+    std::printf(" %s pos / vel RMSE, mean q, card. error |", s.name.c_str());
+  }
   std::printf("\n|---|");
   for (std::size_t i = 0; i < all.size(); ++i) std::printf("---|");
   std::printf("\n");
@@ -157,8 +161,9 @@ void print(const std::vector<FilterStats>& all, const Options& o, int scans) {
     }
     std::printf("| %d |", k);
     for (const FilterStats& s : all) {
-      std::printf(" %.1f / %.1f, %.3f |", rmse(s.position_se[k], s.reported_present[k]),
-                  rmse(s.velocity_se[k], s.reported_present[k]), s.q_sum[k] / o.runs);
+      std::printf(" %.1f / %.1f, %.3f, %.2f |", rmse(s.position_se[k], s.reported_present[k]),
+                  rmse(s.velocity_se[k], s.reported_present[k]), s.q_sum[k] / o.runs,
+                  s.cardinality_error[k] / o.runs);
     }
     std::printf("\n");
   }
