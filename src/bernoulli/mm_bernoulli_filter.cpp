@@ -142,6 +142,45 @@ double MmBernoulliFilter::likelihood_integral(int j, std::size_t survivors,
   return integral;
 }
 
+void MmBernoulliFilter::update_and_resample(const std::array<std::size_t, kMaxModels>& count,
+                                            BernoulliEstimate& estimate) noexcept {
+  const int m = spec_.model_count;
+  const double pd = spec_.detection_probability;
+  // Eq. 26-27 and step 3(3): weights times l(x), normalised, resampled to N_j.
+  estimate.mean.setZero();
+  std::array<Eigen::Vector4d, kMaxModels> means;
+  std::array<Eigen::Matrix4d, kMaxModels> covariances;
+  for (int j = 0; j < m; ++j) {
+    const std::size_t n = count[j];
+    if (n == 0) {  // no mass in this model: keep its cloud for the mixing, empty of weight
+      means[j].setZero();
+      covariances[j].setZero();
+      continue;
+    }
+    double sum = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      weight_[j][k] *= 1.0 - pd + pd * ratio_[j][k];
+      sum += weight_[j][k];
+    }
+    const double scale = sum > 0.0 ? 1.0 / sum : 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      weight_[j][k] = sum > 0.0 ? weight_[j][k] * scale : 1.0 / static_cast<double>(n);
+    }
+    const std::span<const Particle> cloud(work_[j].data(), n);
+    const std::span<const double> w(weight_[j].data(), n);
+    weighted_moments(cloud, w, means[j], covariances[j]);
+    systematic_resample(cloud, w, rng_.uniform(), posterior_[j]);
+    estimate.mean += mu_[j] * means[j];
+  }
+  has_posterior_ = true;
+  estimate.covariance.setZero();  // eq. 28 and its spread of means
+  for (int j = 0; j < m; ++j) {
+    if (count[j] == 0) continue;
+    const Eigen::Vector4d d = means[j] - estimate.mean;
+    estimate.covariance += mu_[j] * (covariances[j] + d * d.transpose());
+  }
+}
+
 void MmBernoulliFilter::recurse(double dt, BernoulliEstimate& estimate) noexcept {
   const int m = spec_.model_count;
   const double pd = spec_.detection_probability;
@@ -182,39 +221,7 @@ void MmBernoulliFilter::recurse(double dt, BernoulliEstimate& estimate) noexcept
   q_ = update_existence(q_predicted, std::span(mu_full).first(m), std::span(omd).first(m));
   mu_ = mu_full;
   update_model_probabilities(std::span(mu_).first(m), std::span(omd).first(m));
-  // Eq. 26-27 and step 3(3): weights times l(x), normalised, resampled to N_j.
-  estimate.mean.setZero();
-  std::array<Eigen::Vector4d, kMaxModels> means;
-  std::array<Eigen::Matrix4d, kMaxModels> covariances;
-  for (int j = 0; j < m; ++j) {
-    const std::size_t n = count[j];
-    if (n == 0) {  // no mass in this model: keep its cloud for the mixing, empty of weight
-      means[j].setZero();
-      covariances[j].setZero();
-      continue;
-    }
-    double sum = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      weight_[j][k] *= 1.0 - pd + pd * ratio_[j][k];
-      sum += weight_[j][k];
-    }
-    const double scale = sum > 0.0 ? 1.0 / sum : 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      weight_[j][k] = sum > 0.0 ? weight_[j][k] * scale : 1.0 / static_cast<double>(n);
-    }
-    const std::span<const Particle> cloud(work_[j].data(), n);
-    const std::span<const double> w(weight_[j].data(), n);
-    weighted_moments(cloud, w, means[j], covariances[j]);
-    systematic_resample(cloud, w, rng_.uniform(), posterior_[j]);
-    estimate.mean += mu_[j] * means[j];
-  }
-  has_posterior_ = true;
-  estimate.covariance.setZero();  // eq. 28 and its spread of means
-  for (int j = 0; j < m; ++j) {
-    if (count[j] == 0) continue;
-    const Eigen::Vector4d d = means[j] - estimate.mean;
-    estimate.covariance += mu_[j] * (covariances[j] + d * d.transpose());
-  }
+  update_and_resample(count, estimate);
   estimate.existence = q_;
   estimate.target_reported = q_ > spec_.existence_threshold;
   for (int j = 0; j < m; ++j) estimate.model_probabilities[j] = mu_[j];
