@@ -98,7 +98,8 @@ struct ModelDynamics {
 };
 ModelDynamics make_dynamics(const BernoulliModelSpec& model, double dt) noexcept;
 
-inline void propagate(const ModelDynamics& m, Particle& p, NormalSampler& rng) noexcept {
+[[gnu::always_inline]] inline void propagate(const ModelDynamics& m, Particle& p,
+                                             NormalSampler& rng) noexcept {
   const double ax = rng.normal(), ay = rng.normal();
   const Particle q = p;
   p.x = q.x + m.s_over_w * q.vx - m.one_minus_c_over_w * q.vy + m.g_position * ax;
