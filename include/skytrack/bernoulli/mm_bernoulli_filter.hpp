@@ -1,0 +1,75 @@
+#pragma once
+// The multiple-model Bernoulli particle filter, MMBPF (paper 001, Yang & Zhang 2017, §3):
+// at most one target, its existence probability q (eq. 9, 13) and per motion model a fixed
+// number of particles chosen by the model's manoeuvrability (BernoulliModelSpec::particles).
+// Each scan, per model: the initial cloud is resampled from the previous posteriors of all
+// models by the mixing probabilities (step 2, eq. 18-19) with no particle interaction,
+// predicted by the model, joined by birth particles from a proposal round the previous
+// scan's plots (eq. 22-23), weighted by l(x) (eq. 16, 26) and resampled back to its fixed
+// count; the model probabilities come from each model's likelihood 1 - Delta (eq. 17), and
+// the output is the model-probability-weighted estimate (eq. 28).
+// 2-D: state [x, vx, y, vy] in the local ENU tracking frame. Deterministic for a seed.
+#include <array>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "skytrack/bernoulli/bernoulli_estimate.hpp"
+#include "skytrack/bernoulli/bernoulli_spec.hpp"
+#include "skytrack/bernoulli/birth_proposal.hpp"
+#include "skytrack/bernoulli/normal_sampler.hpp"
+#include "skytrack/bernoulli/particle_kernel.hpp"
+#include "skytrack/bernoulli/plot_history.hpp"
+#include "skytrack/measurement/plot_measurement.hpp"
+
+namespace skytrack::bernoulli {
+
+class MmBernoulliFilter {
+ public:
+  /// Allocates every buffer. The spec is used as given: model_count in [1, kMaxModels],
+  /// particles >= 1 and transition rows summing to 1 are the caller's to check.
+  explicit MmBernoulliFilter(const BernoulliSpec& spec);
+
+  /// One scan at `time` [s] (after the previous scan's, else skipped and reported), from a
+  /// sensor at `platform` (tracking frame; Cartesian plots only use it, polar plots carry
+  /// their own platform). An empty scan is a scan in which nothing was detected.
+  BernoulliEstimate step(double time, const Eigen::Vector2d& platform,
+                         std::span<const PlotMeasurement> plots) noexcept;
+  /// The same with plain polar plots about `platform`.
+  BernoulliEstimate step(double time, const Eigen::Vector2d& platform,
+                         std::span<const PolarPlot2d> plots) noexcept;
+
+  const BernoulliEstimate& last() const noexcept { return last_; }
+  /// Back to no target and no history; the random engine continues.
+  void reset() noexcept;
+
+ private:
+  BernoulliEstimate begin_scan(double time, int rejected) noexcept;
+  void recurse(double dt, BernoulliEstimate& estimate) noexcept;
+  std::size_t predict_model(int j, double survival_mass, double birth_mass,
+                            const std::array<double, kMaxModels>& mu_predicted,
+                            const ModelDynamics& dynamics) noexcept;
+  double likelihood_integral(int j, std::size_t survivors, std::size_t count) noexcept;
+  /// Eq. 26-28 and step 3(3): weights times l(x), model moments, resampling to N_j, output.
+  void update_and_resample(const std::array<std::size_t, kMaxModels>& count,
+                           BernoulliEstimate& estimate) noexcept;
+
+  BernoulliSpec spec_;
+  NormalSampler rng_;
+  PlotHistory history_;
+  BirthProposalSampler births_;
+  std::array<std::vector<Particle>, kMaxModels> posterior_;  // N_j each, equal weights
+  std::array<std::vector<Particle>, kMaxModels> work_;       // N_j + birth particles
+  std::vector<Particle> newborn_;                            // birth cloud at scan k-1
+  std::array<std::vector<double>, kMaxModels> weight_;
+  std::array<std::vector<double>, kMaxModels> ratio_;  // sum_z g / kappa per particle
+  std::array<double, kMaxModels> mu_{};                // mu_{k-1}
+  double q_ = 0.0;
+  bool has_posterior_ = false;
+  bool started_ = false;
+  double last_time_ = 0.0;
+  BernoulliEstimate last_;
+};
+
+}  // namespace skytrack::bernoulli

@@ -1,0 +1,119 @@
+#pragma once
+// The per-particle arithmetic shared by the MMBPF and its IMMBPF baseline (paper 001):
+// propagation by one motion model (eq. 1, 22), the plot likelihood ratio g(z|x) / kappa(z)
+// of eq. 15-16 and its gated accumulation over a block of particles, systematic resampling
+// and weighted moments. State [x, vx, y, vy] in the local ENU frame, m and m/s.
+#include <array>
+#include <cmath>
+#include <span>
+
+#include <Eigen/Core>
+
+#include "skytrack/bernoulli/bernoulli_spec.hpp"
+#include "skytrack/bernoulli/normal_sampler.hpp"
+
+namespace skytrack::bernoulli {
+
+struct Particle {
+  double x = 0.0, vx = 0.0, y = 0.0, vy = 0.0;  // [m, m/s, m, m/s]
+};
+
+/// One plot prepared once per scan for the likelihood, the gate and the birth proposal.
+/// A polar plot measures range and azimuth about `origin`; `along` is the unit line of sight
+/// at the measured azimuth and `across` the unit direction of increasing azimuth, so a
+/// position p at d = p - origin has azimuth offset atan2(d.across, d.along). A Cartesian plot
+/// measures `position` with independent errors along the x (`along`) and y (`across`) axes.
+struct ScanPlot {
+  bool polar = true;
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();  // in the tracking frame [m]
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();    // polar: the platform [m]
+  Eigen::Vector2d along = Eigen::Vector2d::UnitX();
+  Eigen::Vector2d across = Eigen::Vector2d::UnitY();
+  double range = 0.0;           // polar: measured range [m]
+  double inv_sigma_first = 0;   // 1/sigma_r [1/m] or 1/sigma_x
+  double inv_sigma_second = 0;  // 1/sigma_az [1/rad] or 1/sigma_y
+  double sigma_along = 0.0;     // position spread along `along` [m]
+  double sigma_across = 0.0;    // position spread along `across` [m] (polar: r sigma_az)
+  double peak_ratio = 0.0;      // g(z|x) / kappa(z) at zero residual
+  std::array<double, 4> box{};  // gate box in the tracking frame: x min, x max, y min, y max
+};
+
+/// A polar plot about `origin`, azimuth in the tracking frame (clockwise from north) [rad];
+/// clutter_intensity in [1/(m rad)]. Returns false for non-finite values or sigma <= 0.
+bool make_polar_plot(const Eigen::Vector2d& origin, double range, double azimuth,
+                     double sigma_range, double sigma_azimuth, double clutter_intensity,
+                     double gate_distance_squared, ScanPlot& out) noexcept;
+/// A Cartesian plot with clutter intensity [1/m^2].
+bool make_cartesian_plot(const Eigen::Vector2d& position, double sigma_x, double sigma_y,
+                         double clutter_intensity, double gate_distance_squared,
+                         ScanPlot& out) noexcept;
+
+/// Squared Mahalanobis distance of the plot from a particle at (x, y) in measurement space.
+/// With d = p - origin, a = d.along, c = d.across and t = c / a, the azimuth offset is
+/// atan(t) and the range a sqrt(1 + t^2); inside |t| <= 0.05 rad both come from their
+/// series (atan to t^5, the root to t^6: errors below 1e-11 rad and 1e-10 of the range), so
+/// the particles near a plot cost one division and no atan2, sqrt or hypot.
+inline double plot_distance_squared(const ScanPlot& plot, double x, double y) noexcept {
+  if (!plot.polar) {
+    const double dx = (x - plot.position.x()) * plot.inv_sigma_first;
+    const double dy = (y - plot.position.y()) * plot.inv_sigma_second;
+    return dx * dx + dy * dy;
+  }
+  const double dx = x - plot.origin.x(), dy = y - plot.origin.y();
+  const double a = dx * plot.along.x() + dy * plot.along.y();
+  if (a <= 0.0) return 1e300;  // behind the sensor
+  const double c = dx * plot.across.x() + dy * plot.across.y();
+  const double t = c / a, t2 = t * t;
+  double dazimuth = 0.0, range = 0.0;
+  if (t2 <= 0.0025) {
+    dazimuth = t * (1.0 - t2 * (1.0 / 3.0 - t2 * 0.2));
+    range = a * (1.0 + t2 * (0.5 - t2 * (0.125 - t2 * 0.0625)));
+  } else {  // far off the line of sight: a wide beam's gate
+    dazimuth = std::atan2(c, a);
+    range = std::sqrt(a * a + c * c);
+  }
+  const double er = (range - plot.range) * plot.inv_sigma_first;
+  const double ea = dazimuth * plot.inv_sigma_second;
+  return er * er + ea * ea;
+}
+
+/// g(z|x) / kappa(z) (eq. 15-16), 0 beyond the gate.
+inline double plot_likelihood_ratio(const ScanPlot& plot, double x, double y,
+                                    double gate_distance_squared) noexcept {
+  const double m = plot_distance_squared(plot, x, y);
+  return m < gate_distance_squared ? plot.peak_ratio * std::exp(-0.5 * m) : 0.0;
+}
+
+/// Adds sum_z g(z|x_n) / kappa(z) to ratio_sum[n] for each particle of `block`; a plot whose
+/// gate box misses the block's bounding box is skipped without touching the particles.
+void accumulate_likelihood_ratios(std::span<const Particle> block, std::span<const ScanPlot> plots,
+                                  double gate_distance_squared,
+                                  std::span<double> ratio_sum) noexcept;
+
+/// One model's transition over dt: x' = F x + G a, G = [dt^2/2, dt] per axis (see
+/// BernoulliModelSpec), F the CV or CT matrix of the paper's §4.
+struct ModelDynamics {
+  double s_over_w = 1.0, one_minus_c_over_w = 0.0, c = 1.0, s = 0.0;  // CT terms (CV: dt,0,1,0)
+  double g_position = 0.5, g_velocity = 1.0;                          // G scaled by sigma
+};
+ModelDynamics make_dynamics(const BernoulliModelSpec& model, double dt) noexcept;
+
+[[gnu::always_inline]] inline void propagate(const ModelDynamics& m, Particle& p,
+                                             NormalSampler& rng) noexcept {
+  const double ax = rng.normal(), ay = rng.normal();
+  const Particle q = p;
+  p.x = q.x + m.s_over_w * q.vx - m.one_minus_c_over_w * q.vy + m.g_position * ax;
+  p.vx = m.c * q.vx - m.s * q.vy + m.g_velocity * ax;
+  p.y = q.y + m.one_minus_c_over_w * q.vx + m.s_over_w * q.vy + m.g_position * ay;
+  p.vy = m.s * q.vx + m.c * q.vy + m.g_velocity * ay;
+}
+
+/// Systematic resampling of `in` with normalised `weights` into all of `out` (u0 in [0, 1)).
+void systematic_resample(std::span<const Particle> in, std::span<const double> weights, double u0,
+                         std::span<Particle> out) noexcept;
+
+/// Weighted mean and covariance [x, vx, y, vy] of particles with weights summing to 1.
+void weighted_moments(std::span<const Particle> particles, std::span<const double> weights,
+                      Eigen::Vector4d& mean, Eigen::Matrix4d& covariance) noexcept;
+
+}  // namespace skytrack::bernoulli

@@ -1,0 +1,231 @@
+// MMBPF recursion (paper 001, §3.2 steps 1-4, eq. 9-28).
+#include "skytrack/bernoulli/mm_bernoulli_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "skytrack/bernoulli/bernoulli_equations.hpp"
+
+namespace skytrack::bernoulli {
+
+MmBernoulliFilter::MmBernoulliFilter(const BernoulliSpec& spec)
+    : spec_(spec), rng_(spec.seed), history_(spec), births_(spec) {
+  spec_.model_count = std::clamp(spec_.model_count, 1, kMaxModels);
+  const auto births = static_cast<std::size_t>(std::max(spec_.birth_particles, 0));
+  newborn_.resize(births);
+  for (int j = 0; j < spec_.model_count; ++j) {
+    const auto n = static_cast<std::size_t>(std::max(spec_.models[j].particles, 1));
+    posterior_[j].resize(n);
+    work_[j].resize(n + births);
+    weight_[j].resize(n + births);
+    ratio_[j].resize(n + births);
+  }
+  reset();
+}
+
+void MmBernoulliFilter::reset() noexcept {
+  for (int j = 0; j < spec_.model_count; ++j) mu_[j] = spec_.birth_model_probabilities[j];
+  q_ = 0.0;
+  has_posterior_ = false;
+  started_ = false;
+  history_.clear();
+  last_ = BernoulliEstimate{};
+  last_.model_count = spec_.model_count;
+}
+
+BernoulliEstimate MmBernoulliFilter::step(double time, const Eigen::Vector2d& platform,
+                                          std::span<const PlotMeasurement> plots) noexcept {
+  if (!std::isfinite(time) || (started_ && time <= last_time_)) {
+    BernoulliEstimate skipped = last_;
+    skipped.scan_skipped = true;
+    return skipped;
+  }
+  return begin_scan(time, history_.load(plots, platform));
+}
+
+BernoulliEstimate MmBernoulliFilter::step(double time, const Eigen::Vector2d& platform,
+                                          std::span<const PolarPlot2d> plots) noexcept {
+  if (!std::isfinite(time) || (started_ && time <= last_time_)) {
+    BernoulliEstimate skipped = last_;
+    skipped.scan_skipped = true;
+    return skipped;
+  }
+  return begin_scan(time, history_.load(platform, plots));
+}
+
+BernoulliEstimate MmBernoulliFilter::begin_scan(double time, int rejected) noexcept {
+  BernoulliEstimate estimate = last_;
+  estimate.time = time;
+  estimate.scan_skipped = false;
+  estimate.plots_rejected = rejected;
+  estimate.plots_used = static_cast<int>(history_.current().size());
+  if (started_) recurse(time - last_time_, estimate);  // the first scan only seeds births
+  if (estimate.target_reported && !last_.target_reported) ++estimate.report_epoch;
+  started_ = true;
+  last_time_ = time;
+  history_.advance(time);
+  last_ = estimate;
+  return estimate;
+}
+
+std::size_t MmBernoulliFilter::predict_model(int j, double survival_mass, double birth_mass,
+                                             const std::array<double, kMaxModels>& mu_predicted,
+                                             const ModelDynamics& dynamics) noexcept {
+  const int m = spec_.model_count;
+  std::vector<Particle>& work = work_[j];
+  std::vector<double>& weight = weight_[j];
+  const std::size_t survivors = survival_mass > 0.0 ? posterior_[j].size() : 0;
+  // Step 2 (eq. 19): N_j particles drawn from the previous posteriors of all models, as many
+  // from model i as the mixing probability pi_ij mu_i / mu_{k|k-1}(j) gives (systematic
+  // allocation of the counts), picked from model i's equally weighted cloud at a regular
+  // stride from a random start (systematic, not multinomial, draws: a model's own cloud
+  // passes on whole instead of losing a third of its distinct particles each scan).
+  std::size_t n = 0;
+  double cumulative = 0.0;
+  const double offset = rng_.uniform();
+  int last_source = 0;  // the last model with a share: it fills what rounding leaves
+  for (int i = 0; i < m && survivors > 0; ++i) {
+    const double share = spec_.transition[i][j] * mu_[i] / mu_predicted[j];
+    if (share > 0.0) last_source = i;
+    cumulative += share;
+    const auto end = std::min(
+        survivors, static_cast<std::size_t>(std::max(0.0, cumulative * survivors + offset)));
+    if (end <= n) continue;
+    const std::vector<Particle>& source = posterior_[i];
+    const double stride = static_cast<double>(source.size()) / static_cast<double>(end - n);
+    const double start = rng_.uniform() * stride;
+    for (std::size_t k = 0; n < end; ++n, ++k) {
+      const auto index = std::min(
+          source.size() - 1, static_cast<std::size_t>(start + static_cast<double>(k) * stride));
+      work[n] = source[index];
+      propagate(dynamics, work[n], rng_);
+    }
+  }
+  for (; n < survivors; ++n) {  // rounding left a slot: the last model fills it
+    const std::vector<Particle>& source = posterior_[last_source];
+    work[n] = source[rng_.index(static_cast<std::uint32_t>(source.size()))];
+    propagate(dynamics, work[n], rng_);
+  }
+  const std::size_t newborn = birth_mass > 0.0 ? work.size() - posterior_[j].size() : 0;
+  // The newborn cloud at scan k-1 is drawn once per scan and shared by the models (common
+  // random numbers: each model's birth cloud is still a sample of the proposal).
+  for (std::size_t k = 0; k < newborn; ++k) {
+    work[survivors + k] = newborn_[k];
+    propagate(dynamics, work[survivors + k], rng_);
+  }
+  // Eq. 23-24 within the model: survivors share p_s q mu, newborns p_b (1 - q) gamma.
+  const double total = survival_mass + birth_mass;
+  const double w_survivor = survivors ? survival_mass / total / static_cast<double>(survivors) : 0;
+  const double w_newborn = newborn ? birth_mass / total / static_cast<double>(newborn) : 0;
+  std::fill_n(weight.begin(), survivors, w_survivor);
+  std::fill_n(weight.begin() + static_cast<std::ptrdiff_t>(survivors), newborn, w_newborn);
+  return survivors + newborn;
+}
+
+double MmBernoulliFilter::likelihood_integral(int j, std::size_t survivors,
+                                              std::size_t count) noexcept {
+  const std::span<const Particle> work(work_[j].data(), count);
+  const std::span<double> ratio(ratio_[j].data(), count);
+  std::fill(ratio.begin(), ratio.end(), 0.0);
+  const auto plots = history_.current();
+  const double gate = spec_.gate_distance_squared;
+  // Gate per compact block: the survivors, then each birth seed's group.
+  accumulate_likelihood_ratios(work.first(survivors), plots, gate, ratio.first(survivors));
+  const std::size_t newborn = count - survivors;
+  for (std::size_t s = 0; s < births_.seed_count() && newborn > 0; ++s) {
+    const std::size_t b = survivors + births_.group_begin(s, newborn);
+    const std::size_t e = survivors + births_.group_begin(s + 1, newborn);
+    accumulate_likelihood_ratios(work.subspan(b, e - b), plots, gate, ratio.subspan(b, e - b));
+  }
+  double integral = 0.0;  // eq. 25
+  for (std::size_t n = 0; n < count; ++n) integral += weight_[j][n] * ratio[n];
+  return integral;
+}
+
+void MmBernoulliFilter::update_and_resample(const std::array<std::size_t, kMaxModels>& count,
+                                            BernoulliEstimate& estimate) noexcept {
+  const int m = spec_.model_count;
+  const double pd = spec_.detection_probability;
+  // Eq. 26-27 and step 3(3): weights times l(x), normalised, resampled to N_j.
+  estimate.mean.setZero();
+  std::array<Eigen::Vector4d, kMaxModels> means;
+  std::array<Eigen::Matrix4d, kMaxModels> covariances;
+  for (int j = 0; j < m; ++j) {
+    const std::size_t n = count[j];
+    if (n == 0) {  // no mass in this model: keep its cloud for the mixing, empty of weight
+      means[j].setZero();
+      covariances[j].setZero();
+      continue;
+    }
+    double sum = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      weight_[j][k] *= 1.0 - pd + pd * ratio_[j][k];
+      sum += weight_[j][k];
+    }
+    const double scale = sum > 0.0 ? 1.0 / sum : 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      weight_[j][k] = sum > 0.0 ? weight_[j][k] * scale : 1.0 / static_cast<double>(n);
+    }
+    const std::span<const Particle> cloud(work_[j].data(), n);
+    const std::span<const double> w(weight_[j].data(), n);
+    weighted_moments(cloud, w, means[j], covariances[j]);
+    systematic_resample(cloud, w, rng_.uniform(), posterior_[j]);
+    estimate.mean += mu_[j] * means[j];
+  }
+  has_posterior_ = true;
+  estimate.covariance.setZero();  // eq. 28 and its spread of means
+  for (int j = 0; j < m; ++j) {
+    if (count[j] == 0) continue;
+    const Eigen::Vector4d d = means[j] - estimate.mean;
+    estimate.covariance += mu_[j] * (covariances[j] + d * d.transpose());
+  }
+}
+
+void MmBernoulliFilter::recurse(double dt, BernoulliEstimate& estimate) noexcept {
+  const int m = spec_.model_count;
+  const double pd = spec_.detection_probability;
+  const bool pairs = spec_.birth_proposal == BirthProposal::kPlotPairs;
+  const double pair_dt = history_.previous_time() - history_.before_previous_time();
+  births_.choose_seeds(history_.previous(),
+                       pairs && history_.scans_seen() >= 2 ? history_.before_previous()
+                                                           : std::span<const ScanPlot>{},
+                       pair_dt, static_cast<std::size_t>(std::max(spec_.birth_particles, 0)), rng_);
+  const bool has_birth = births_.seed_count() > 0 && spec_.birth_particles > 0;
+  if (has_birth) births_.sample(newborn_, rng_);
+  // Step 1 (eq. 18) and eq. 9-10 split into survival and birth masses per model.
+  std::array<double, kMaxModels> mu_predicted{}, survival{}, birth{}, mu_full{}, omd{};
+  double q_predicted = 0.0;
+  for (int j = 0; j < m; ++j) {
+    for (int i = 0; i < m; ++i) mu_predicted[j] += spec_.transition[i][j] * mu_[i];
+    survival[j] = has_posterior_ ? spec_.survival_probability * q_ * mu_predicted[j] : 0.0;
+    birth[j] =
+        has_birth ? spec_.birth_probability * (1.0 - q_) * spec_.birth_model_probabilities[j] : 0.0;
+    q_predicted += survival[j] + birth[j];
+  }
+  if (!(q_predicted > 0.0)) {
+    q_ = 0.0;
+    has_posterior_ = false;
+    estimate.existence = 0.0;
+    estimate.target_reported = false;
+    return;
+  }
+  std::array<std::size_t, kMaxModels> count{}, survivors{};
+  for (int j = 0; j < m; ++j) {
+    mu_full[j] = (survival[j] + birth[j]) / q_predicted;
+    if (!(mu_full[j] > 0.0)) continue;
+    const ModelDynamics dynamics = make_dynamics(spec_.models[j], dt);
+    count[j] = predict_model(j, survival[j], birth[j], mu_predicted, dynamics);
+    survivors[j] = survival[j] > 0.0 ? posterior_[j].size() : 0;
+    omd[j] = one_minus_delta(pd, likelihood_integral(j, survivors[j], count[j]));
+  }
+  q_ = update_existence(q_predicted, std::span(mu_full).first(m), std::span(omd).first(m));
+  mu_ = mu_full;
+  update_model_probabilities(std::span(mu_).first(m), std::span(omd).first(m));
+  update_and_resample(count, estimate);
+  estimate.existence = q_;
+  estimate.target_reported = q_ > spec_.existence_threshold;
+  for (int j = 0; j < m; ++j) estimate.model_probabilities[j] = mu_[j];
+  estimate.model_count = m;
+}
+
+}  // namespace skytrack::bernoulli

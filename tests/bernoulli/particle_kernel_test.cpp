@@ -1,0 +1,153 @@
+// Likelihood ratios, gating, dynamics, resampling and moments of the particle kernel.
+#include "skytrack/bernoulli/particle_kernel.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "skytrack/motion/coordinated_turn.hpp"
+
+namespace skytrack::bernoulli {
+namespace {
+
+constexpr double kKappa = 20.0 / (std::numbers::pi * 25000.0);  // the paper's 2.5465e-4
+
+TEST(BernoulliParticleKernel, LikelihoodRatioAtThePlotIsThePeakDensityOverClutter) {
+  ScanPlot plot;
+  ASSERT_TRUE(make_polar_plot({0, 0}, 20000.0, 0.5, 5.0, 3e-3, kKappa, 50.0, plot));
+  // g peak 1 / (2 pi 5 m 3 mrad) = 10.61 per m rad, over kappa 2.5465e-4: 41667
+  const double expected = 1.0 / (2.0 * std::numbers::pi * 5.0 * 3e-3 * kKappa);
+  EXPECT_NEAR(expected, 41666.7, 0.1);
+  EXPECT_NEAR(plot_likelihood_ratio(plot, plot.position.x(), plot.position.y(), 50.0), expected,
+              1e-9 * expected);
+}
+
+TEST(BernoulliParticleKernel, DistanceMatchesExactRangeAndAzimuthFromAMovingPlatform) {
+  // GIVEN a platform away from the origin and a plot at azimuth 2.8 rad (south-east)
+  const Eigen::Vector2d origin(-3000.0, 1500.0);
+  const double range = 18000.0, azimuth = 2.8, sr = 5.0, sa = 3e-3;
+  ScanPlot plot;
+  ASSERT_TRUE(make_polar_plot(origin, range, azimuth, sr, sa, kKappa, 50.0, plot));
+  // WHEN particles lie a few sigma off in range and azimuth THEN the distance is the exact one
+  for (const double dr : {-20.0, 0.0, 13.0}) {
+    for (const double da : {-0.2, -0.015, -0.004, 0.0, 0.009, 0.06}) {
+      const double r = range + dr, a = azimuth + da;
+      const double x = origin.x() + r * std::sin(a), y = origin.y() + r * std::cos(a);
+      const double exact_r = std::hypot(x - origin.x(), y - origin.y());
+      const double exact_a = std::atan2(x - origin.x(), y - origin.y());
+      const double expected =
+          std::pow((exact_r - range) / sr, 2) + std::pow((exact_a - azimuth) / sa, 2);
+      EXPECT_NEAR(plot_distance_squared(plot, x, y), expected, 1e-6 * (1.0 + expected));
+    }
+  }
+  // A particle behind the sensor is never in the gate.
+  EXPECT_EQ(plot_likelihood_ratio(plot, origin.x() - 100 * std::sin(azimuth),
+                                  origin.y() - 100 * std::cos(azimuth), 50.0),
+            0.0);
+}
+
+TEST(BernoulliParticleKernel, CartesianPlotRatio) {
+  ScanPlot plot;
+  ASSERT_TRUE(make_cartesian_plot({100.0, 200.0}, 10.0, 20.0, 1e-8, 50.0, plot));
+  // d^2 = (10/10)^2 + (20/20)^2 = 2 -> peak e^-1, peak 1 / (2 pi 200 1e-8)
+  const double peak = 1.0 / (2.0 * std::numbers::pi * 200.0 * 1e-8);
+  EXPECT_NEAR(plot_likelihood_ratio(plot, 110.0, 220.0, 50.0), peak * std::exp(-1.0), 1e-6 * peak);
+  EXPECT_FALSE(make_cartesian_plot({NAN, 0.0}, 10.0, 10.0, 1e-8, 50.0, plot));
+  EXPECT_FALSE(make_polar_plot({0, 0}, 100.0, 0.1, 0.0, 1e-3, kKappa, 50.0, plot));
+}
+
+TEST(BernoulliParticleKernel, GatedAccumulationEqualsTheSumOverEveryPlot) {
+  NormalSampler rng(5);
+  std::vector<ScanPlot> plots;
+  for (int i = 0; i < 30; ++i) {
+    ScanPlot plot;
+    const double r = i < 3 ? 15000.0 + 10.0 * i : 25000.0 * rng.uniform();
+    const double a = i < 3 ? 1.0 + 0.002 * i : std::numbers::pi * rng.uniform();
+    ASSERT_TRUE(make_polar_plot({0, 0}, r, a, 5.0, 3e-3, kKappa, 50.0, plot));
+    plots.push_back(plot);
+  }
+  std::vector<Particle> cloud(500);
+  for (Particle& p : cloud) {
+    p.x = 15000.0 * std::sin(1.0) + 40.0 * rng.normal();
+    p.y = 15000.0 * std::cos(1.0) + 40.0 * rng.normal();
+  }
+  std::vector<double> gated(cloud.size(), 0.0);
+  accumulate_likelihood_ratios(cloud, plots, 50.0, gated);
+  double total = 0.0;
+  for (std::size_t n = 0; n < cloud.size(); ++n) {
+    double brute = 0.0;
+    for (const ScanPlot& plot : plots)
+      brute += plot_likelihood_ratio(plot, cloud[n].x, cloud[n].y, 50.0);
+    EXPECT_NEAR(gated[n], brute, 1e-9 * (1.0 + brute));
+    total += brute;
+  }
+  EXPECT_GT(total, 0.0);  // the test saw particles in a gate
+}
+
+TEST(BernoulliParticleKernel, NoiseFreeDynamicsMatchTheCoordinatedTurnModel) {
+  const StateLayout layout{};
+  for (const double w : {0.0, -0.1, 0.07}) {
+    const ModelDynamics m = make_dynamics({w, 0.0, 1}, 2.0);
+    const StateMat F = CoordinatedTurn{w, 1.0, 1.0}.transition(layout, 2.0);
+    Particle p{100.0, -8.3, 200.0, -399.9};
+    NormalSampler rng(1);
+    propagate(m, p, rng);  // accel_sigma 0: the draws have no effect
+    StateVec x(4);
+    x << 100.0, -8.3, 200.0, -399.9;
+    const StateVec expected = F * x;
+    EXPECT_NEAR(p.x, expected[0], 1e-9);
+    EXPECT_NEAR(p.vx, expected[1], 1e-9);
+    EXPECT_NEAR(p.y, expected[2], 1e-9);
+    EXPECT_NEAR(p.vy, expected[3], 1e-9);
+  }
+}
+
+TEST(BernoulliParticleKernel, ProcessNoiseIsDiscreteWhiteAcceleration) {
+  // Var(x) = (T^2/2 sigma)^2, Var(vx) = (T sigma)^2, Cov = T^3/2 sigma^2 with T 1, sigma 5
+  const ModelDynamics m = make_dynamics({0.0, 5.0, 1}, 1.0);
+  NormalSampler rng(9);
+  double sxx = 0, svv = 0, sxv = 0;
+  constexpr int kDraws = 200000;
+  for (int i = 0; i < kDraws; ++i) {
+    Particle p;
+    propagate(m, p, rng);
+    sxx += p.x * p.x;
+    svv += p.vx * p.vx;
+    sxv += p.x * p.vx;
+  }
+  EXPECT_NEAR(sxx / kDraws, 6.25, 0.1);
+  EXPECT_NEAR(svv / kDraws, 25.0, 0.4);
+  EXPECT_NEAR(sxv / kDraws, 12.5, 0.2);
+}
+
+TEST(BernoulliParticleKernel, SystematicResamplingCopiesByWeight) {
+  const std::vector<Particle> in{{1, 0, 0, 0}, {2, 0, 0, 0}, {3, 0, 0, 0}};
+  std::vector<Particle> out(4);
+  systematic_resample(in, std::vector<double>{0.0, 1.0, 0.0}, 0.3, out);
+  for (const Particle& p : out) EXPECT_EQ(p.x, 2.0);
+  systematic_resample(in, std::vector<double>{0.5, 0.0, 0.5}, 0.7, out);
+  EXPECT_EQ(out[0].x, 1.0);
+  EXPECT_EQ(out[1].x, 1.0);
+  EXPECT_EQ(out[2].x, 3.0);
+  EXPECT_EQ(out[3].x, 3.0);
+}
+
+TEST(BernoulliParticleKernel, WeightedMomentsByHand) {
+  // x in {10000, 10004} with weights 0.25, 0.75: mean 10003, variance 3
+  const std::vector<Particle> in{{10000, 1, 0, 0}, {10004, 1, 2, 0}};
+  Eigen::Vector4d mean;
+  Eigen::Matrix4d cov;
+  weighted_moments(in, std::vector<double>{0.25, 0.75}, mean, cov);
+  EXPECT_NEAR(mean[0], 10003.0, 1e-9);
+  EXPECT_NEAR(mean[1], 1.0, 1e-12);
+  EXPECT_NEAR(mean[2], 1.5, 1e-12);
+  EXPECT_NEAR(cov(0, 0), 3.0, 1e-9);
+  EXPECT_NEAR(cov(0, 2), 1.5, 1e-9);  // 0.25 (-3)(-1.5) + 0.75 (1)(0.5)
+  EXPECT_NEAR(cov(2, 0), 1.5, 1e-9);
+  EXPECT_NEAR(cov(1, 1), 0.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace skytrack::bernoulli
