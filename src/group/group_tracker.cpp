@@ -1,6 +1,7 @@
 // Paper 000: §3.1 preprocessing (clutter/mean_shift_partition) feeding the §3.2 filter.
 #include "skytrack/group/group_tracker.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -40,6 +41,8 @@ void check_group_spec(const GroupSpec& s) {
   require(std::isfinite(s.clutter_rate) && s.clutter_rate >= 0.0, "clutter_rate must be >= 0");
   require(positive(s.surveillance_area), "surveillance_area must be > 0");
   require(positive(s.extraction_threshold), "extraction_threshold must be > 0");
+  require(std::isfinite(s.readmit_distance) && s.readmit_distance >= 0.0,
+          "readmit_distance must be >= 0");
   require(s.max_missed >= 0, "max_missed must be >= 0");
   require(probability(s.shape_smoothing), "shape_smoothing must be in [0, 1]");
   require(std::isfinite(s.measurement_sigma) && s.measurement_sigma >= 0.0,
@@ -78,6 +81,37 @@ void make_cells(std::span<const Eigen::Vector3d> positions,
   }
 }
 
+void readmit_plots(std::span<const Eigen::Vector3d> positions,
+                   const clutter::ClutterRejectionResult& rejection, double distance,
+                   std::vector<clutter::PlotPartition>& partitions) noexcept {
+  if (!(distance > 0.0) || partitions.empty()) {
+    return;
+  }
+  const std::size_t n = std::min(positions.size(), rejection.keep.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d p = positions[i].head<2>();
+    if (rejection.keep[i] != 0 || !p.allFinite()) {
+      continue;
+    }
+    double best = distance;
+    clutter::PlotPartition* nearest = nullptr;
+    for (clutter::PlotPartition& part : partitions) {
+      const Eigen::Vector2d lo = part.box.lower.head<2>();
+      const Eigen::Vector2d hi = part.box.upper.head<2>();
+      const double d = (p - p.cwiseMax(lo).cwiseMin(hi)).norm();  // distance to the box
+      if (d <= best) {
+        best = d;
+        nearest = &part;
+      }
+    }
+    if (nearest != nullptr) {
+      nearest->plots.push_back(static_cast<int>(i));
+      nearest->box.lower.head<2>() = nearest->box.lower.head<2>().cwiseMin(p);
+      nearest->box.upper.head<2>() = nearest->box.upper.head<2>().cwiseMax(p);
+    }
+  }
+}
+
 GroupTracker::GroupTracker(const GroupSpec& spec)
     : spec_((check_group_spec(spec), spec)), partitioner_(spec.preprocessing), filter_(spec) {}
 
@@ -95,12 +129,19 @@ const std::vector<GroupEstimate>& GroupTracker::process(
 const std::vector<GroupEstimate>& GroupTracker::process(
     double time, std::span<const Eigen::Vector3d> positions) noexcept {
   const std::vector<clutter::PlotPartition>& parts = partitioner_.partition(positions, 2);
-  make_cells(positions, parts, spec_.measurement_box_padding, cells_);
+  partitions_.resize(parts.size());
+  for (std::size_t c = 0; c < parts.size(); ++c) {
+    partitions_[c].plots.assign(parts[c].plots.begin(), parts[c].plots.end());
+    partitions_[c].box = parts[c].box;
+  }
+  readmit_plots(positions, partitioner_.rejection(), spec_.readmit_distance, partitions_);
+  make_cells(positions, partitions_, spec_.measurement_box_padding, cells_);
   return filter_.step(time, cells_);
 }
 
 const std::vector<GroupEstimate>& GroupTracker::process_cells(
     double time, std::span<const GroupCell> cells) noexcept {
+  partitions_.clear();
   cells_.assign(cells.begin(), cells.end());
   return filter_.step(time, cells_);
 }

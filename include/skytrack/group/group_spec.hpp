@@ -60,6 +60,11 @@ struct GroupSpec {
   double measurement_sigma = 2.5;             // [m] subtracted (as sigma^2) from the plot spread
   double member_detection_probability = 1.0;  // plots per member per scan
 
+  // Eq. 8 always rejects the lowest-density plots, which without clutter are a group's
+  // outermost ones: a rejected plot within this distance of a cell's interval hull rejoins
+  // the nearest such cell (ours; 0 = off), so boxes, extent and member count are not shrunk.
+  double readmit_distance = 10.0;  // [m]
+
   // Preprocessing (§3.1): kernel-density clutter rejection and mean-shift cells.
   config::ClutterRejectionSpec preprocessing = default_preprocessing();
 

@@ -23,6 +23,12 @@ void make_cells(std::span<const Eigen::Vector3d> positions,
                 std::span<const clutter::PlotPartition> partitions, double padding,
                 std::vector<GroupCell>& out) noexcept;
 
+/// Adds each plot with keep == 0 (finite position) to the partition whose interval hull is
+/// nearest, when that hull is within `distance` [m] (x, y); boxes grow to take it in.
+void readmit_plots(std::span<const Eigen::Vector3d> positions,
+                   const clutter::ClutterRejectionResult& rejection, double distance,
+                   std::vector<clutter::PlotPartition>& partitions) noexcept;
+
 class GroupTracker {
  public:
   /// Checks the spec (throws std::invalid_argument); allocates the workspaces.
@@ -41,9 +47,7 @@ class GroupTracker {
   const std::vector<GroupEstimate>& estimates() const noexcept { return filter_.estimates(); }
   const LabeledBoxPhd& filter() const noexcept { return filter_; }
   /// The last scan's partitions (plot indices into that scan) and cells, in the same order.
-  const std::vector<clutter::PlotPartition>& partitions() const noexcept {
-    return partitioner_.partitions();
-  }
+  const std::vector<clutter::PlotPartition>& partitions() const noexcept { return partitions_; }
   const std::vector<GroupCell>& cells() const noexcept { return cells_; }
   const clutter::ClutterRejectionResult& rejection() const noexcept {
     return partitioner_.rejection();
@@ -55,6 +59,7 @@ class GroupTracker {
   LabeledBoxPhd filter_;
   std::vector<Eigen::Vector3d> positions_;
   std::vector<GroupCell> cells_;
+  std::vector<clutter::PlotPartition> partitions_;
 };
 
 }  // namespace skytrack::group

@@ -28,8 +28,10 @@ skytrack::config::ClutterRejectionSpec preprocessing(const GroupSpec& spec, bool
 
 }  // namespace
 
-BpPhdKmeans::BpPhdKmeans(const GroupSpec& spec, bool mean_shift, double partition_distance)
+BpPhdKmeans::BpPhdKmeans(const GroupSpec& spec, bool mean_shift, double partition_distance,
+                         KmeansInit init)
     : spec_(spec),
+      init_(init),
       partitioner_(preprocessing(spec, mean_shift, partition_distance)),
       rng_(spec.seed) {}
 
@@ -121,7 +123,7 @@ const std::vector<BoxVec>& BpPhdKmeans::step(double time, std::span<const Eigen:
   return estimates_;
 }
 
-// Lloyd's k-means over the box centres' positions, k-means++ seeding (MATLAB's default).
+// Lloyd's k-means over the box centres' positions, 20 iterations, seeded as init_ says.
 void BpPhdKmeans::kmeans(int k) {
   estimates_.clear();
   const std::size_t n = particles_.size();
@@ -134,6 +136,9 @@ void BpPhdKmeans::kmeans(int k) {
   std::vector<Eigen::Vector2d> centres;
   centres.push_back(pos(static_cast<std::size_t>(uniform(0.0, 1.0) * n) % n));
   std::vector<double> d2(n);
+  while (init_ == KmeansInit::kRandom && static_cast<int>(centres.size()) < k) {
+    centres.push_back(pos(static_cast<std::size_t>(uniform(0.0, 1.0) * n) % n));
+  }
   while (static_cast<int>(centres.size()) < k) {
     double total = 0.0;
     for (std::size_t i = 0; i < n; ++i) {

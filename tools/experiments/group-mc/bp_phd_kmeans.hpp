@@ -22,12 +22,16 @@ using skytrack::group::BoxParticle;
 using skytrack::group::BoxVec;
 using skytrack::group::GroupSpec;
 
+/// k-means seeding: random boxes as the initial centres (Forgy, the classic k-means whose
+/// local optima the paper blames), or k-means++ (Arthur & Vassilvitskii 2007).
+enum class KmeansInit { kRandom, kPlusPlus };
+
 class BpPhdKmeans {
  public:
   /// mean_shift: true = MS-BP-PHD (clutter rejection + mean-shift cells, spec.preprocessing);
   /// false = BP-PHD: no clutter rejection, distance partitioning (plots closer than
   /// partition_distance [m], transitively, share a cell).
-  BpPhdKmeans(const GroupSpec& spec, bool mean_shift, double partition_distance);
+  BpPhdKmeans(const GroupSpec& spec, bool mean_shift, double partition_distance, KmeansInit init);
 
   /// One scan; returns the k-means state estimates [x vx y vy].
   const std::vector<BoxVec>& step(double time, std::span<const Eigen::Vector3d> plots);
@@ -38,6 +42,7 @@ class BpPhdKmeans {
   double uniform(double lo, double hi);
 
   GroupSpec spec_;
+  KmeansInit init_;
   skytrack::clutter::MeanShiftPartitioner partitioner_;
   std::mt19937_64 rng_;
   std::vector<BoxParticle> particles_;
