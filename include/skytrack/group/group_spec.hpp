@@ -44,8 +44,10 @@ struct GroupSpec {
   // PHD update (eq. 15, 18-20).
   double survival_probability = 0.99;  // Ps
   double detection_probability = 1.0;  // Pd of a group (the paper's exp. 1: 1; exp. 2: 0.98)
-  double clutter_rate = 10.0;          // lambda, mean clutter plots per scan
-  double surveillance_area = 4.0e6;    // [m^2] |A|, clutter intensity lambda |[z]| / |A|
+  // lambda of eq. 20: mean clutter plots per scan that reach the filter. The paper's 10 is
+  // its raw rate; after the preprocessing fewer survive, so this is an upper bound there.
+  double clutter_rate = 10.0;
+  double surveillance_area = 4.0e6;  // [m^2] |A|, clutter intensity lambda |[z]| / |A|
 
   // Labels (§3.2.7).
   LabelModel labels = LabelModel::kDouble;
@@ -79,7 +81,7 @@ struct GroupSpec {
     spec.mean_shift.bandwidth = 10.0;       // [m]
     spec.mean_shift.merge_distance = 10.0;  // [m]
     spec.mean_shift.max_iterations = 50;
-    spec.mean_shift.tolerance = 0.1;  // [m]
+    spec.mean_shift.tolerance = 0.5;  // [m]
     return spec;
   }
 };
