@@ -130,8 +130,12 @@ int experiment1(int runs, std::uint64_t first_seed, const std::string& svg) {
   }
   fmt::print("\n");
   const std::vector<int> birth_first = {1, 15, 20, 25};
-  double many[kFilters] = {}, all[kFilters] = {};
-  int many_scans = 0, scored = 0;
+  const auto is_birth_first = [&](std::size_t k) {
+    return std::find(birth_first.begin(), birth_first.end(), static_cast<int>(k) + 1) !=
+           birth_first.end();
+  };
+  double many[kFilters] = {}, all[kFilters] = {}, settled[kFilters] = {};
+  int many_scans = 0, settled_scans = 0, scored = 0;
   const std::size_t scans = totals[0].ospa.size();
   for (std::size_t k = 0; k < scans; ++k) {
     const int truth = static_cast<int>(first.truth_positions(static_cast<int>(k) + 1).size());
@@ -143,7 +147,9 @@ int experiment1(int runs, std::uint64_t first_seed, const std::string& svg) {
       fmt::print(" {:.1f} |", totals[f].ospa[k] / n);
       all[f] += totals[f].ospa[k] / n;
       many[f] += truth >= 4 ? totals[f].ospa[k] / n : 0.0;
+      settled[f] += truth >= 4 && !is_birth_first(k) ? totals[f].ospa[k] / n : 0.0;
     }
+    settled_scans += truth >= 4 && !is_birth_first(k) ? 1 : 0;
     fmt::print(" {:.0f} % |\n", 100.0 * totals[0].count_right[k] / n);
     many_scans += truth >= 4 ? 1 : 0;
     if (std::find(birth_first.begin(), birth_first.end(), static_cast<int>(k) + 1) ==
@@ -164,7 +170,8 @@ int experiment1(int runs, std::uint64_t first_seed, const std::string& svg) {
         ok += totals[f].count_right[k];
       }
     }
-    fmt::print("| {} | {:.1f} | {:.1f} | {:.1f} % | {:.2f} |\n", kNames[f], many[f] / many_scans,
+    fmt::print("| {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} % | {:.2f} |\n", kNames[f],
+               many[f] / many_scans, settled[f] / std::max(settled_scans, 1),
                all[f] / static_cast<double>(scans), 100.0 * ok / std::max(scored, 1),
                1e3 * totals[f].seconds / n);
   }
