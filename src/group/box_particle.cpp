@@ -149,42 +149,74 @@ void phd_update(std::span<BoxParticle> particles, std::span<const PlaneBox> cell
   out.best_cell.assign(n, -1);
   out.denominators.assign(m, 0.0);
   out.shares.assign(static_cast<std::size_t>(out.slots) * m, 0.0);
-  out.likelihood.resize(n * m);
+  // Cells by lower x bound; the widest cell bounds how far left a meeting cell can start.
+  out.cells_by_x.resize(m);
+  for (std::size_t j = 0; j < m; ++j) {
+    out.cells_by_x[j] = static_cast<int>(j);
+  }
+  std::sort(out.cells_by_x.begin(), out.cells_by_x.end(), [&cells](int a, int b) {
+    const double xa = cells[static_cast<std::size_t>(a)].lower.x();
+    const double xb = cells[static_cast<std::size_t>(b)].lower.x();
+    return xa < xb || (xa == xb && a < b);
+  });
+  out.lower_x.resize(m);
+  double widest = 0.0;
+  for (std::size_t r = 0; r < m; ++r) {
+    const PlaneBox& z = cells[static_cast<std::size_t>(out.cells_by_x[r])];
+    out.lower_x[r] = z.lower.x();
+    widest = std::max(widest, z.upper.x() - z.lower.x());
+  }
+  // Eq. 19 for the pairs that can meet, and eq. 20: lambda c([z_j]) + sum_i g_ij Pd w_i.
+  out.pairs.clear();
+  out.offsets.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    if (!std::isfinite(particles[i].weight) || particles[i].weight < 0.0) {
-      particles[i].weight = 0.0;
+    BoxParticle& b = particles[i];
+    if (!std::isfinite(b.weight) || b.weight < 0.0) {
+      b.weight = 0.0;
+    }
+    out.offsets[i] = out.pairs.size();
+    const double x_lo = b.centre(kPosX) - b.half(kPosX);
+    const double x_hi = b.centre(kPosX) + b.half(kPosX);
+    if (!(x_lo <= x_hi) || !(widest >= 0.0)) {
+      continue;
+    }
+    auto r = static_cast<std::size_t>(
+        std::lower_bound(out.lower_x.begin(), out.lower_x.end(), x_lo - widest) -
+        out.lower_x.begin());
+    for (; r < m && out.lower_x[r] <= x_hi; ++r) {
+      const int j = out.cells_by_x[r];
+      const double g = box_likelihood(b, cells[static_cast<std::size_t>(j)]);
+      if (g > 0.0) {
+        out.pairs.emplace_back(j, g);
+        out.denominators[static_cast<std::size_t>(j)] += g * pd * b.weight;
+      }
     }
   }
-  // Eq. 20: lambda c([z_j]) + sum_i g_ij Pd w_i.
+  out.offsets[n] = out.pairs.size();
   for (std::size_t j = 0; j < m; ++j) {
     const double clutter = j < clutter_intensity.size() ? clutter_intensity[j] : 0.0;
-    double d = std::isfinite(clutter) && clutter > 0.0 ? clutter : 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double g = box_likelihood(particles[i], cells[j]);
-      out.likelihood[i * m + j] = g;
-      d += g * pd * particles[i].weight;
-    }
-    out.denominators[j] = d;
+    out.denominators[j] += std::isfinite(clutter) && clutter > 0.0 ? clutter : 0.0;
   }
   // Eq. 18 and 23-24.
   for (std::size_t i = 0; i < n; ++i) {
     BoxParticle& b = particles[i];
     double factor = 1.0 - pd;
     double best = 0.0;
-    for (std::size_t j = 0; j < m; ++j) {
-      const double d = out.denominators[j];
-      const double g = out.likelihood[i * m + j];
-      if (!(g > 0.0) || !(d > 0.0)) {
+    for (std::size_t e = out.offsets[i]; e < out.offsets[i + 1]; ++e) {
+      const auto [j, g] = out.pairs[e];
+      const double d = out.denominators[static_cast<std::size_t>(j)];
+      if (!(d > 0.0)) {
         continue;
       }
       const double wj = g * pd / d;  // eq. 24 without the prior weight
       factor += wj;
-      if (wj > best) {
+      if (wj > best || (wj == best && j < out.best_cell[i])) {
         best = wj;
-        out.best_cell[i] = static_cast<int>(j);
+        out.best_cell[i] = j;
       }
       if (b.slot >= 0 && b.slot < out.slots) {
-        out.shares[static_cast<std::size_t>(b.slot) * m + j] += wj * b.weight;
+        out.shares[static_cast<std::size_t>(b.slot) * m + static_cast<std::size_t>(j)] +=
+            wj * b.weight;
       }
     }
     b.weight *= factor;

@@ -19,7 +19,8 @@ void LabeledBoxPhd::apply_label_rules(std::span<const GroupCell> /*cells*/) noex
   const std::size_t n_labels = labels_.size();
   const std::size_t slots = n_labels + previous_cells_.size();
   const double chi_prime = spec_.extraction_threshold;
-  std::vector<char> owns(slots, spec_.exclusive_cells ? 0 : 1);
+  std::vector<char>& owns = owns_;
+  owns.assign(slots, spec_.exclusive_cells ? 0 : 1);
   for (const int s : owner_) {
     if (s >= 0) {
       owns[static_cast<std::size_t>(s)] = 1;
@@ -150,22 +151,36 @@ void LabeledBoxPhd::resample() noexcept {
   const BoxVec nominal_half(0.5 * spec_.position_width, 0.5 * spec_.velocity_width,
                             0.5 * spec_.position_width, 0.5 * spec_.velocity_width);
   next_.clear();
-  for (const LabelState& ls : labels_) {
-    members_of_label_.clear();
-    weights_.clear();
-    for (std::size_t i = 0; i < particles_.size(); ++i) {
-      if (particles_[i].slot == ls.slot) {
-        members_of_label_.push_back(static_cast<int>(i));
-        weights_.push_back(particles_[i].weight);
-      }
+  // Particles bucketed by slot (counting sort over slot_count_ from extract()).
+  const std::size_t slots = slot_count_.size();
+  bucket_start_.assign(slots + 1, 0);
+  for (std::size_t s = 0; s < slots; ++s) {
+    bucket_start_[s + 1] = bucket_start_[s] + slot_count_[s];
+  }
+  members_of_label_.resize(static_cast<std::size_t>(bucket_start_[slots]));
+  picks_.assign(bucket_start_.begin(), bucket_start_.end() - 1);  // fill cursors
+  for (std::size_t i = 0; i < particles_.size(); ++i) {
+    const int s = particles_[i].slot;
+    if (s >= 0 && static_cast<std::size_t>(s) < slots) {
+      members_of_label_[static_cast<std::size_t>(picks_[static_cast<std::size_t>(s)]++)] =
+          static_cast<int>(i);
     }
-    if (members_of_label_.empty()) {
+  }
+  for (const LabelState& ls : labels_) {
+    const auto s = static_cast<std::size_t>(ls.slot);
+    const auto first = static_cast<std::size_t>(bucket_start_[s]);
+    const auto last = static_cast<std::size_t>(bucket_start_[s + 1]);
+    if (first == last) {
       continue;
+    }
+    weights_.clear();
+    for (std::size_t k = first; k < last; ++k) {
+      weights_.push_back(particles_[static_cast<std::size_t>(members_of_label_[k])].weight);
     }
     systematic_resample(weights_, count, uniform(0.0, 1.0), picks_);
     for (const int k : picks_) {
-      BoxParticle b =
-          particles_[static_cast<std::size_t>(members_of_label_[static_cast<std::size_t>(k)])];
+      BoxParticle b = particles_[static_cast<std::size_t>(
+          members_of_label_[first + static_cast<std::size_t>(k)])];
       for (int j = 0; j < 4; ++j) {
         b.centre(j) += uniform(-1.0, 1.0) * spec_.jitter * nominal_half(j);
       }

@@ -6,8 +6,10 @@
 // (eq. 25-26) by constraint propagation through the motion model, and per-label
 // systematic resampling. Shared by the labeled filter and the k-means baselines.
 // State of a box: intervals over [x vx y vy] (2-D, tracking frame, SI units).
+#include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -62,8 +64,15 @@ struct PhdUpdateResult {
   std::vector<double> denominators;  // eq. 20 per cell
   std::vector<double> shares;        // slots x cells (row-major): sum over the slot's
                                      // particles of g Pd w / denominator (eq. 24)
-  std::vector<double> likelihood;    // particles x cells (row-major), eq. 19
   int slots = 0;
+  // Workspace: the non-zero likelihoods (eq. 19) of particle i are pairs
+  // [offsets[i], offsets[i + 1]) of (cell, g); cells sorted by their lower x bound let each
+  // box visit only the cells its x interval can meet, so the cost grows with the boxes
+  // times the cells near each, not boxes times cells.
+  std::vector<std::pair<int, double>> pairs;
+  std::vector<std::size_t> offsets;
+  std::vector<int> cells_by_x;
+  std::vector<double> lower_x;  // sorted
 };
 
 /// Eq. 18 and 20 in place on the particles' weights: w <- [(1 - Pd) + sum_j g_ij Pd /
