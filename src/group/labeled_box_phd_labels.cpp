@@ -11,27 +11,40 @@
 
 namespace skytrack::group {
 
-// §3.2.7. A label is detected when its weight sum N-hat^m reaches chi' (and, with
-// exclusive_cells, it owns a cell); otherwise l2 += 1 and it dies when l2 > chi (double
-// label) or at once (single label). A newborn set whose weight sum exceeds chi' (and owns a
-// cell) becomes a new group l_max + 1, ... in cell order.
+// §3.2.7. A label is detected when its weight sum N-hat^m reaches chi'; otherwise l2 += 1
+// and it dies when l2 > chi (double label) or at once (single label). A newborn set whose
+// weight sum exceeds chi' becomes a new group l_max + 1, ... in cell order.
+// With exclusive_cells (ours) the weight counted for that test is the target mass of the
+// cells the slot owns, sum over all slots of their shares (eq. 24) of each owned cell: a
+// cell detects one group. Two labels on one merged group then split its mass ~0.5 / 0.5,
+// and the owner is detected while the other coasts and dies, instead of both missing.
 void LabeledBoxPhd::apply_label_rules(std::span<const GroupCell> /*cells*/) noexcept {
   const std::size_t n_labels = labels_.size();
   const std::size_t slots = n_labels + previous_cells_.size();
   const double chi_prime = spec_.extraction_threshold;
-  std::vector<char>& owns = owns_;
-  owns.assign(slots, spec_.exclusive_cells ? 0 : 1);
-  for (const int s : owner_) {
-    if (s >= 0) {
-      owns[static_cast<std::size_t>(s)] = 1;
+  std::vector<double>& credit = credit_;
+  if (spec_.exclusive_cells) {
+    credit.assign(slots, 0.0);
+    const std::size_t m = owner_.size();
+    for (std::size_t j = 0; j < m; ++j) {
+      if (owner_[j] < 0) {
+        continue;
+      }
+      double cell_mass = 0.0;
+      for (std::size_t s = 0; s < slots; ++s) {
+        cell_mass += update_.shares[s * m + j];
+      }
+      credit[static_cast<std::size_t>(owner_[j])] += cell_mass;
     }
+  } else {
+    credit.assign(slot_mass_.begin(), slot_mass_.end());
   }
   slot_label_.assign(slots, 0);
   std::size_t kept = 0;
   for (std::size_t s = 0; s < n_labels; ++s) {
     LabelState ls = labels_[s];
     ls.slot = static_cast<int>(s);
-    ls.detected = slot_mass_[s] >= chi_prime && owns[s] != 0;
+    ls.detected = credit[s] >= chi_prime;
     if (ls.detected) {
       ls.missed = 0;
     } else {
@@ -45,7 +58,7 @@ void LabeledBoxPhd::apply_label_rules(std::span<const GroupCell> /*cells*/) noex
   }
   labels_.resize(kept);
   for (std::size_t s = n_labels; s < slots; ++s) {
-    if (slot_mass_[s] > chi_prime && owns[s] != 0) {
+    if (credit[s] > chi_prime) {
       LabelState ls;
       ls.label = next_label_++;
       ls.detected = true;

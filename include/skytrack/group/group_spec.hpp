@@ -54,7 +54,8 @@ struct GroupSpec {
   double extraction_threshold = 0.5;  // chi'
   int max_missed = 3;                 // chi: a label dies when l2 > chi
   // A cell counts as a detection of only the label (or newborn set) that took the largest
-  // share of it (ours): without it two labels on one merged group keep ~0.5 each forever.
+  // share of it, credited with the cell's whole target mass (ours): without it two labels on
+  // one merged group keep ~0.5 each, both below chi', or both above it forever.
   bool exclusive_cells = true;
 
   // Extent and member count from the cells a label took (ours; docs/group.md).

@@ -103,7 +103,7 @@ class LabeledBoxPhd {
   std::vector<BoxVec> slot_plain_;  // per slot: sum of centres (a label whose weights are 0)
   std::vector<int> slot_count_;
   std::vector<int> bucket_start_;  // per slot: first index in members_of_label_
-  std::vector<char> owns_;         // per slot: took at least one cell
+  std::vector<double> credit_;     // per slot: the weight the label rules test against chi'
 };
 
 }  // namespace skytrack::group
