@@ -17,34 +17,6 @@ namespace {
 
 using namespace detail;
 
-// The point tracker's sections, under `point`. A profile of the shape before mode sections has
-// them at the top level: read from there, the same keys (config/README.md, "Profiles of the
-// earlier shape"); a profile may not have both.
-void read_point(YamlSection& root, ErrorList& errors, TrackingProfile& p) {
-  constexpr const char* kSections[] = {"initiation", "track_life", "branching"};
-  if (!root.has("point")) {
-    p.point.initiation = read_initiation(root.section("initiation"));
-    p.point.track_life = read_track_life(root.section("track_life"));
-    p.point.branching = read_branching(root.section("branching"), errors, p);
-    return;
-  }
-  if (p.mode != TrackingMode::kPoint) {
-    root.error("point", "applies to mode: point only (this profile's mode is " +
-                            std::string(to_string(p.mode)) + ")");
-  }
-  for (const char* key : kSections) {
-    if (root.has(key)) {
-      root.error(key, "belongs under point: (point." + std::string(key) +
-                          "), and this profile has a point section");
-    }
-  }
-  YamlSection point = root.section("point");
-  p.point.initiation = read_initiation(point.section("initiation"));
-  p.point.track_life = read_track_life(point.section("track_life"));
-  p.point.branching = read_branching(point.section("branching"), errors, p);
-  point.finish();
-}
-
 TrackingProfile read_profile(const YAML::Node& node, ErrorList& errors) {
   TrackingProfile p;
   YamlSection root(node, "", errors);
@@ -77,7 +49,7 @@ TrackingProfile read_profile(const YAML::Node& node, ErrorList& errors) {
   p.association = read_association(root.section("association"));
   p.clutter_rejection = read_clutter_rejection(root.section("clutter_rejection"));
   p.input_limits = read_input_limits(root.section("input_limits"));
-  read_point(root, errors, p);
+  read_mode_sections(root, errors, p);
   root.finish();
   return p;
 }

@@ -61,6 +61,9 @@ InitiationSpec read_initiation(YamlSection s);
 InputLimitsSpec read_input_limits(YamlSection s);
 TrackLifeSpec read_track_life(YamlSection s);
 BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingProfile& p);
+/// Each mode's own section (point, bernoulli, ...): the profile's mode's is read, another
+/// mode's is refused.
+void read_mode_sections(YamlSection& root, ErrorList& errors, TrackingProfile& p);
 /// The checks that span the IMM's keys: models, transition matrix, initial probabilities.
 void check_imm(YamlSection& root, ErrorList& errors, const TrackingProfile& p, bool transition_ok,
                bool initial_ok);

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <string>
 
+#include "skytrack/bernoulli/bernoulli_tracker.hpp"
 #include "skytrack/tracking/point_tracker.hpp"
 
 namespace skytrack {
@@ -17,12 +18,17 @@ Expected<EstimatorStages> EstimatorStages::create(const config::TrackingProfile&
       estimator = std::make_unique<PointTracker>(std::move(*point));
       break;
     }
+    case config::TrackingMode::kBernoulli: {
+      auto watch = bernoulli::BernoulliTracker::create(profile);
+      if (!watch) return unexpected(watch.error());
+      estimator = std::make_unique<bernoulli::BernoulliTracker>(std::move(*watch));
+      break;
+    }
     case config::TrackingMode::kGroup:
     case config::TrackingMode::kExtended:
-    case config::TrackingMode::kBernoulli:
       return make_error("profile '" + profile.identity.name + "': mode '" +
                         std::string(config::to_string(profile.mode)) +
-                        "' is not implemented yet (only point)");
+                        "' is not implemented yet (point and bernoulli are)");
   }
   return EstimatorStages(Preprocessing(profile, dims), std::move(estimator));
 }

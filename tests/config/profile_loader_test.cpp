@@ -95,6 +95,58 @@ TEST(ProfileLoader, PointSectionsInBothPlacesOrForAnotherModeAreRefusedWithTheWa
   EXPECT_THAT(unknown.error().message, HasSubstr("point.branchin"));
 }
 
+TEST(ProfileLoader, BernoulliModeTakesTheCommonModelsAndItsOwnSection) {
+  // GIVEN a Bernoulli profile with two models and its particles per model
+  const auto profile = parse_profile(R"(profile: {name: b, version: 1}
+mode: bernoulli
+motion_models:
+  - {name: cv, type: constant_velocity, accel_sigma: 3.0}
+  - {name: turn, type: coordinated_turn, turn_rate: -0.1, accel_sigma: 8.0}
+mode_transition: [[0.9, 0.1], [0.2, 0.8]]
+initial_mode_probabilities: [0.7, 0.3]
+association: {detection_probability: 0.8}
+bernoulli: {particles: [100, 400], birth: velocity_prior, birth_velocity: [10, -20]}
+)",
+                                     "b.yaml");
+  ASSERT_TRUE(profile) << profile.error().message;
+  // THEN the filter's models, transition, birth probabilities and P_D are the common ones
+  const bernoulli::BernoulliSpec& b = profile->bernoulli;
+  EXPECT_EQ(b.model_count, 2);
+  EXPECT_DOUBLE_EQ(b.models[0].turn_rate, 0.0);
+  EXPECT_DOUBLE_EQ(b.models[1].turn_rate, -0.1);
+  EXPECT_DOUBLE_EQ(b.models[1].accel_sigma, 8.0);
+  EXPECT_EQ(b.models[0].particles, 100);
+  EXPECT_EQ(b.models[1].particles, 400);
+  EXPECT_DOUBLE_EQ(b.transition[1][0], 0.2);
+  EXPECT_DOUBLE_EQ(b.birth_model_probabilities[1], 0.3);
+  EXPECT_DOUBLE_EQ(b.detection_probability, 0.8);
+  EXPECT_EQ(b.birth_proposal, bernoulli::BirthProposal::kVelocityPrior);
+  EXPECT_DOUBLE_EQ(b.birth_velocity[1], -20.0);
+}
+
+TEST(ProfileLoader, BernoulliModeRefusesWhatItsFilterCannotRun) {
+  const auto load = [](const std::string& body) {
+    return parse_profile("profile: {name: b, version: 1}\n" + body, "b.yaml");
+  };
+  // a model type the particle filter has no dynamics for
+  const auto singer = load(R"(mode: bernoulli
+motion_models: [{name: s, type: singer}]
+mode_transition: [[1.0]]
+initial_mode_probabilities: [1.0]
+)");
+  ASSERT_FALSE(singer);
+  EXPECT_THAT(singer.error().message, HasSubstr("takes constant_velocity and coordinated_turn"));
+  // one particle count per model
+  const auto counts = load("mode: bernoulli\nbernoulli: {particles: [100, 200]}\n");
+  ASSERT_FALSE(counts);
+  EXPECT_THAT(counts.error().message, HasSubstr("bernoulli.particles"));
+  // 3-D, and a bernoulli section in a point profile
+  EXPECT_FALSE(load("mode: bernoulli\ndimension: 3\n"));
+  const auto other = load("mode: point\nbernoulli: {}\n");
+  ASSERT_FALSE(other);
+  EXPECT_THAT(other.error().message, HasSubstr("applies to mode: bernoulli only"));
+}
+
 TEST(ProfileLoader, ShippedDefaultProfileEqualsTheCompiledDefaults) {
   // The file documents the defaults; it must not drift from the struct initialisers.
   auto profile = load_profile(kDefaultProfile);

@@ -70,13 +70,15 @@ class EndToEnd : public ::testing::Test {
         << read_file(path("replay.log"));
   }
 
-  void simulate_and_track_offline() {
-    ASSERT_EQ(run({kTool, "simulate", "--scenario", kSource + "/config/scenarios/default.yaml",
-                   "--plots", path("plots.jsonl"), "--truth", path("truth.jsonl")},
-                  path("simulate.log")),
-              0)
+  void simulate_and_track_offline(const std::string& scenario = "default",
+                                  const std::string& profile = kProfile) {
+    ASSERT_EQ(
+        run({kTool, "simulate", "--scenario", kSource + "/config/scenarios/" + scenario + ".yaml",
+             "--plots", path("plots.jsonl"), "--truth", path("truth.jsonl")},
+            path("simulate.log")),
+        0)
         << read_file(path("simulate.log"));
-    ASSERT_EQ(run({kTool, "track", "--profile", kProfile, "--plots", path("plots.jsonl"), "--out",
+    ASSERT_EQ(run({kTool, "track", "--profile", profile, "--plots", path("plots.jsonl"), "--out",
                    path("offline.tracks.jsonl"), "--quiet"},
                   path("track.log")),
               0)
@@ -173,6 +175,32 @@ TEST_F(EndToEnd, ReplayAtMaxRateRecordsTheOfflineTracks) {
   // ... and the late display received the current picture: the last scan's tracks
   expect_same_tracks(read_tracks(path("late.tracks.jsonl")), {offline.back()});
   EXPECT_THAT(daemon.log(), HasSubstr("config/dds/loopback.xml"));
+}
+
+TEST_F(EndToEnd, EveryImplementedModeRecordsItsOfflineTracksOverDds) {
+  // GIVEN each mode's shipped profile on a scenario of its kind, tracked offline
+  const std::pair<const char*, const char*> modes[] = {{"paper001_mmbpf", "bernoulli"}};
+  for (const auto& [scenario, mode] : modes) {
+    SCOPED_TRACE(mode);
+    const std::string profile = kSource + "/config/profiles/" + mode + ".yaml";
+    simulate_and_track_offline(scenario, profile);
+    const std::string config = write_config(profile);
+    Child daemon({kDaemon, "--config", config}, path("daemon.log"));
+    ASSERT_TRUE(daemon.wait_for_log("running", 10s)) << daemon.log();
+    Child record({kTool, "record", "--config", config, "--tracks", path("live.tracks.jsonl"),
+                  "--until-idle", "1.5"},
+                 path("record.log"));
+    ASSERT_TRUE(record.wait_for_log("matched a TrackBatch writer", 10s)) << record.log();
+    // WHEN its plots are replayed over DDS and the tracks recorded
+    ASSERT_NO_FATAL_FAILURE(replay_at_max_rate(config));
+    ASSERT_EQ(record.wait(30s), 0) << record.log();
+    daemon.signal(SIGTERM);
+    ASSERT_EQ(daemon.wait(5s), 0) << daemon.log();
+    // THEN they are the offline ones, and the mode's target was confirmed
+    expect_same_tracks(read_tracks(path("live.tracks.jsonl")),
+                       read_tracks(path("offline.tracks.jsonl")));
+    EXPECT_THAT(read_file(path("live.tracks.jsonl")), HasSubstr("\"confirmed\""));
+  }
 }
 
 TEST_F(EndToEnd, TwoSensorsOnOnePlotTopicGiveTheOfflineTracks) {

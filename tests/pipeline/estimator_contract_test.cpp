@@ -31,7 +31,24 @@ struct PointGnn {
     return p;
   }
 };
-using kModes = ::testing::Types<PointBranching, PointPlainJpda, PointGnn>;
+/// One straight-flight model, births from plot pairs (the stream's targets fly any way).
+struct Bernoulli {
+  static config::TrackingProfile profile() {
+    config::TrackingProfile p = testing::test_profile();
+    p.mode = config::TrackingMode::kBernoulli;
+    p.dimension = 2;
+    p.motion_models = {{.name = "cv", .accel_sigma = 2.0}};
+    p.mode_transition = {{1.0}};
+    p.initial_mode_probabilities = {1.0};
+    p.bernoulli.model_count = 1;
+    p.bernoulli.models[0] = {.turn_rate = 0.0, .accel_sigma = 2.0, .particles = 500};
+    p.bernoulli.transition[0][0] = 1.0;
+    p.bernoulli.birth_model_probabilities[0] = 1.0;
+    p.bernoulli.birth_proposal = bernoulli::BirthProposal::kPlotPairs;
+    return p;
+  }
+};
+using kModes = ::testing::Types<PointBranching, PointPlainJpda, PointGnn, Bernoulli>;
 
 using testing::cartesian;
 

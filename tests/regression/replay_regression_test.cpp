@@ -29,7 +29,7 @@ struct Case {
 };
 
 // Snapshot and rotating feeds, 2-D and 3-D, JPDA and GNN, branching on and off, clutter
-// areas, manoeuvres, slow surface targets.
+// areas, manoeuvres, slow surface targets; and each other implemented mode.
 const Case kCases[] = {
     {"default", "default"},
     {"default_snapshot", "default"},
@@ -39,6 +39,7 @@ const Case kCases[] = {
     {"airborne_30_targets", "airborne"},
     {"airport_surface", "ground_surveillance"},
     {"paper003_exp1_racetrack_figure_eight", "dense_clutter"},
+    {"paper001_mmbpf", "bernoulli"},  // mode: bernoulli
 };
 
 std::string source(const std::string& relative) {

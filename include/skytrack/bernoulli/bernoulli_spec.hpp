@@ -6,6 +6,7 @@
 // State: 2-D [x, vx, y, vy] in the local ENU tracking frame (DESIGN.md), m and m/s.
 #include <array>
 #include <cstdint>
+#include <string_view>
 
 namespace skytrack::bernoulli {
 
@@ -19,6 +20,7 @@ struct BernoulliModelSpec {
   double turn_rate = 0.0;    // [rad/s] positive = anticlockwise (motion/coordinated_turn.hpp)
   double accel_sigma = 5.0;  // [m/s^2]
   int particles = 300;       // MMBPF: fixed posterior particles of this model (paper §3.2)
+  bool operator==(const BernoulliModelSpec&) const = default;
 };
 
 /// Where birth particles come from (paper eq. 22, the proposal q_b(.|Z)). Both place the
@@ -69,6 +71,11 @@ struct BernoulliSpec {
   /// exp(-25) of its peak, far below the 1 - p_d floor of l(x) (eq. 16).
   double gate_distance_squared = 50.0;
   std::uint64_t seed = 1;
+  bool operator==(const BernoulliSpec&) const = default;
 };
+
+constexpr std::string_view to_string(BirthProposal proposal) {
+  return proposal == BirthProposal::kPlotPairs ? "plot_pairs" : "velocity_prior";
+}
 
 }  // namespace skytrack::bernoulli

@@ -8,6 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "skytrack/bernoulli/bernoulli_spec.hpp"
+
 namespace skytrack::config {
 
 enum class TrackingMode { kPoint, kGroup, kExtended, kBernoulli };
@@ -303,6 +305,10 @@ struct TrackingProfile {
   ClutterRejectionSpec clutter_rejection;
   InputLimitsSpec input_limits;
   PointSpec point;  // mode: point
+  // mode: bernoulli. Its models, their transition matrix and a newborn target's model
+  // probabilities are the common motion_models, mode_transition (per scan) and
+  // initial_mode_probabilities: the loader copies them in.
+  bernoulli::BernoulliSpec bernoulli;
   bool operator==(const TrackingProfile&) const = default;
 };
 

@@ -24,6 +24,10 @@ inline bool is_reported_as_firm(TrackStatus status) {
   return status == TrackStatus::kConfirmed || status == TrackStatus::kCoasting;
 }
 
+/// Provisional numbers (tentative tracks, branches) start here, clear of any number a
+/// confirmed track is given.
+inline constexpr std::int64_t kProvisionalNumber = std::int64_t{1} << 40;
+
 struct TrackReport {
   std::int64_t id = 0;
   TrackStatus status = TrackStatus::kTentative;

@@ -110,10 +110,6 @@ struct PointTrack {
   bool coast_son = false;
 };
 
-/// Provisional numbers (tentative tracks, branches) start here, clear of any number a
-/// confirmed track is given.
-inline constexpr std::int64_t kProvisionalNumber = std::int64_t{1} << 40;
-
 class PointTracker final : public Estimator {
  public:
   /// Checks the profile's models and matrices; fails with a message naming what is wrong.

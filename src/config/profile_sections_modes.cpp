@@ -1,0 +1,136 @@
+// Each estimator mode's own profile section (docs/estimators.md): `point` (with the shape of
+// profiles before mode sections) and `bernoulli`.
+#include <algorithm>
+#include <iterator>
+#include <string>
+
+#include "profile_sections.hpp"
+
+namespace skytrack::config::detail {
+namespace {
+
+// The point tracker's sections, under `point`. A profile of the shape before mode sections has
+// them at the top level: read from there, the same keys (config/README.md, "Profiles of the
+// earlier shape"); a profile may not have both.
+void read_point(YamlSection& root, ErrorList& errors, TrackingProfile& p) {
+  constexpr const char* kSections[] = {"initiation", "track_life", "branching"};
+  if (p.mode != TrackingMode::kPoint) {
+    for (const char* key : {"point", "initiation", "track_life", "branching"}) {
+      if (!root.has(key)) continue;
+      root.section(key);
+      root.error(key, "applies to mode: point only (this profile's mode is " +
+                          std::string(to_string(p.mode)) + ")");
+    }
+    return;
+  }
+  if (!root.has("point")) {
+    p.point.initiation = read_initiation(root.section("initiation"));
+    p.point.track_life = read_track_life(root.section("track_life"));
+    p.point.branching = read_branching(root.section("branching"), errors, p);
+    return;
+  }
+  for (const char* key : kSections) {
+    if (root.has(key)) {
+      root.error(key, "belongs under point: (point." + std::string(key) +
+                          "), and this profile has a point section");
+    }
+  }
+  YamlSection point = root.section("point");
+  p.point.initiation = read_initiation(point.section("initiation"));
+  p.point.track_life = read_track_life(point.section("track_life"));
+  p.point.branching = read_branching(point.section("branching"), errors, p);
+  point.finish();
+}
+
+/// The Bernoulli filter's models are the profile's motion models: constant velocity and
+/// coordinated turns at a known rate, their transition matrix per scan and a newborn
+/// target's model probabilities the common ones.
+void copy_bernoulli_models(YamlSection& root, TrackingProfile& p) {
+  bernoulli::BernoulliSpec& b = p.bernoulli;
+  const auto n = static_cast<int>(p.motion_models.size());
+  if (n > bernoulli::kMaxModels) {
+    root.error("motion_models",
+               "mode bernoulli takes at most " + std::to_string(bernoulli::kMaxModels) + " models");
+    return;
+  }
+  const auto square = [n](const auto& rows) {
+    return static_cast<int>(rows.size()) == n &&
+           std::all_of(rows.begin(), rows.end(),
+                       [n](const auto& row) { return static_cast<int>(row.size()) == n; });
+  };
+  // A wrong-sized matrix or list was reported by check_imm.
+  if (!square(p.mode_transition) || static_cast<int>(p.initial_mode_probabilities.size()) != n) {
+    return;
+  }
+  for (int i = 0; i < n; ++i) {
+    const MotionModelSpec& m = p.motion_models[static_cast<std::size_t>(i)];
+    if (m.type != MotionModelType::kConstantVelocity &&
+        m.type != MotionModelType::kCoordinatedTurn) {
+      root.error("motion_models",
+                 "mode bernoulli takes constant_velocity and coordinated_turn "
+                 "models; '" +
+                     m.name + "' is " + std::string(to_string(m.type)));
+      return;
+    }
+    b.models[static_cast<std::size_t>(i)].turn_rate =
+        m.type == MotionModelType::kCoordinatedTurn ? m.turn_rate : 0.0;
+    b.models[static_cast<std::size_t>(i)].accel_sigma = m.accel_sigma;
+    b.birth_model_probabilities[static_cast<std::size_t>(i)] =
+        p.initial_mode_probabilities[static_cast<std::size_t>(i)];
+    for (int j = 0; j < n; ++j) {
+      b.transition[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] =
+          p.mode_transition[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+    }
+  }
+  b.model_count = n;
+  b.detection_probability = p.association.detection_probability;
+}
+
+void read_bernoulli(YamlSection s, YamlSection& root, TrackingProfile& p) {
+  bernoulli::BernoulliSpec& b = p.bernoulli;
+  copy_bernoulli_models(root, p);
+  std::vector<double> particles;
+  s.numbers("particles", particles, {}, Range{1.0, 1e6});
+  if (!particles.empty()) {
+    if (static_cast<int>(particles.size()) != b.model_count) {
+      s.error("particles", "expected one count per motion model (" + std::to_string(b.model_count) +
+                               "), got " + std::to_string(particles.size()));
+    }
+    for (std::size_t i = 0; i < particles.size() && i < b.models.size(); ++i) {
+      b.models[i].particles = static_cast<int>(particles[i]);
+    }
+  }
+  s.number("survival_probability", b.survival_probability, Range::open_probability());
+  s.number("birth_probability", b.birth_probability, Range::open_probability());
+  s.number("clutter_intensity", b.clutter_intensity, Range{1e-12, 1e3});
+  s.number("existence_threshold", b.existence_threshold, kOpenUnit);
+  read_enum(s, "birth", b.birth_proposal,
+            {bernoulli::BirthProposal::kPlotPairs, bernoulli::BirthProposal::kVelocityPrior});
+  s.integer("birth_particles", b.birth_particles, Range{1.0, 1e6});
+  std::vector<double> velocity(b.birth_velocity.begin(), b.birth_velocity.end());
+  s.numbers("birth_velocity", velocity, {2}, Range{-kMaxSpeed, kMaxSpeed});
+  if (velocity.size() == 2) b.birth_velocity = {velocity[0], velocity[1]};
+  s.number("birth_velocity_sigma", b.birth_velocity_sigma, Range{1e-3, kMaxSpeed});
+  s.number("max_birth_speed", b.max_birth_speed, Range{1e-3, kMaxSpeed});
+  s.number("gate_distance_squared", b.gate_distance_squared, Range{1.0, 1e4});
+  std::int64_t seed = static_cast<std::int64_t>(b.seed);
+  s.integer("seed", seed, Range::non_negative());
+  b.seed = static_cast<std::uint64_t>(seed);
+  s.finish();
+}
+
+}  // namespace
+
+void read_mode_sections(YamlSection& root, ErrorList& errors, TrackingProfile& p) {
+  read_point(root, errors, p);
+  if (p.mode == TrackingMode::kBernoulli) {
+    if (p.dimension == 3) root.error("dimension", "mode bernoulli tracks in 2-D (2 or auto)");
+    read_bernoulli(root.section("bernoulli"), root, p);
+  } else if (root.has("bernoulli")) {
+    root.section("bernoulli");
+    root.error("bernoulli", "applies to mode: bernoulli only (this profile's mode is " +
+                                std::string(to_string(p.mode)) + ")");
+  }
+}
+
+}  // namespace skytrack::config::detail
