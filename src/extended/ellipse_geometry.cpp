@@ -85,28 +85,47 @@ Ellipse minimum_enclosing_ellipse(std::span<const Eigen::Vector2d> points, doubl
     e.shape = half * half.transpose();
     return e;
   }
-  // Khachiyan: weights u on the points lifted to q = (p, 1); the optimum's ellipse is
-  // E(c, d * (sum u p p' - c c')) with c = sum u p, d = 2.
+  // Khachiyan's algorithm with Wolfe-Atwood away steps (Todd & Yildirim 2007): weights u on
+  // the points lifted to q = (p, 1); the optimum's ellipse is E(c, d (sum u p p' - c c')),
+  // c = sum u p, d = 2. An away step lowers the weight of the point deepest inside, which
+  // makes the convergence linear instead of O(1 / tolerance).
+  constexpr double kLifted = 3.0;  // d + 1
   std::vector<double> u(n, 1.0 / n);
+  Eigen::Matrix3d X = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d q(points[i].x(), points[i].y(), 1.0);
+    X.noalias() += u[i] * q * q.transpose();
+  }
   for (int it = 0; it < max_iterations; ++it) {
-    Eigen::Matrix3d X = Eigen::Matrix3d::Zero();
+    bool invertible = false;
+    Eigen::Matrix3d X_inv;
+    X.computeInverseWithCheck(X_inv, invertible);
+    if (!invertible) break;
+    int j = 0, i_min = -1;
+    double m_max = -1.0, m_min = std::numeric_limits<double>::infinity();
     for (int i = 0; i < n; ++i) {
       const Eigen::Vector3d q(points[i].x(), points[i].y(), 1.0);
-      X.noalias() += u[i] * q * q.transpose();
-    }
-    const Eigen::LDLT<Eigen::Matrix3d> ldlt(X);
-    if (ldlt.info() != Eigen::Success) break;
-    int j = 0;
-    double m_max = -1.0;
-    for (int i = 0; i < n; ++i) {
-      const Eigen::Vector3d q(points[i].x(), points[i].y(), 1.0);
-      const double m = q.dot(ldlt.solve(q));
+      const double m = q.dot(X_inv * q);
       if (m > m_max) m_max = m, j = i;
+      if (u[i] > 0.0 && m < m_min) m_min = m, i_min = i;
     }
-    const double step = (m_max - 3.0) / (3.0 * (m_max - 1.0));
-    if (!(step > tolerance)) break;
+    const double gap_up = m_max / kLifted - 1.0;
+    const double gap_down = i_min >= 0 ? 1.0 - m_min / kLifted : 0.0;
+    if (!(std::max(gap_up, gap_down) > tolerance)) break;
+    int k = j;
+    double step = 0.0;
+    if (gap_up >= gap_down) {
+      step = (m_max - kLifted) / (kLifted * (m_max - 1.0));
+    } else {
+      k = i_min;
+      const double w = u[k];
+      step = -std::min((kLifted - m_min) / (kLifted * (m_min - 1.0)), w / (1.0 - w));
+    }
     for (double& w : u) w *= 1.0 - step;
-    u[j] += step;
+    u[k] += step;
+    if (u[k] < 0.0) u[k] = 0.0;
+    const Eigen::Vector3d q(points[k].x(), points[k].y(), 1.0);
+    X = (1.0 - step) * X + step * q * q.transpose();
   }
   Ellipse e;
   Eigen::Matrix2d second = Eigen::Matrix2d::Zero();

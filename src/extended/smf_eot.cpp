@@ -41,7 +41,7 @@ Eigen::Matrix2d smf_extent_measurement(const SmfSpec& spec, std::span<const Eige
     append_ellipse_boundary(z, omega, spec.boundary_points, workspace.boundary);
   }
   convex_hull(workspace.boundary, workspace.hull);                       // eq. 40 (Graham scan)
-  const Ellipse B = minimum_enclosing_ellipse(workspace.hull, 1e-5);           // eq. 41
+  const Ellipse B = minimum_enclosing_ellipse(workspace.hull, 1e-4);     // eq. 41
   const DifferenceResult spread = minkowski_difference(B.shape, omega);  // eq. 42-46
   if (spread.empty) return floor_axes(Eigen::Matrix2d::Zero(), spec.min_axis);
   const DifferenceResult object = minkowski_difference(spread.shape, sensor_bound);  // eq. 47-48
