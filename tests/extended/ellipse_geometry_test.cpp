@@ -6,8 +6,8 @@
 #include <numbers>
 #include <vector>
 
-#include <Eigen/LU>
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 namespace skytrack::extended {
 namespace {

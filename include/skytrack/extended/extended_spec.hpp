@@ -60,10 +60,10 @@ struct ExtendedSpec {
   MemEkfSpec mem_ekf;
 
   // Multi-object tracker (ExtendedTracker).
-  double partition_distance = 60.0;  // [m] plots closer than this share a partition
+  double partition_distance = 100.0;  // [m] plots closer than this share a partition
   /// A partition gates with a track when d^2 = nu' G^-1 nu <= gate, G = HPH' + X + R
   /// (the track's extent enters, so a large object gates its whole plot cloud) [chi^2, 2 dof].
-  double gate = 13.8;
+  double gate = 4.0;
   int min_partition_plots = 2;        // smaller partitions start no track
   int confirm_hits = 3;               // a tentative track is confirmed after this many updates...
   int tentative_max_misses = 1;       // ...and deleted after this many consecutive misses
