@@ -46,36 +46,47 @@ ObjectTruth truth_at(const Mover& m, double t) {
 
 }  // namespace
 
+std::vector<MultiScan> multi_object_scans(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::poisson_distribution<int> object_count(kPlotsMean), clutter_count(kClutterMean);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const Eigen::Matrix2d bound = PaperScenario{}.sensor_bound;
+  std::vector<MultiScan> scans;
+  for (int k = 0; k * kPeriod <= kDuration + 1e-9; ++k) {
+    MultiScan& scan = scans.emplace_back();
+    scan.time = k * kPeriod;
+    for (const Mover& mover : kMovers) {
+      scan.truth.push_back(truth_at(mover, scan.time));
+      if (unit(rng) < kDetection) {
+        sample_object_plots(scan.truth.back(), object_count(rng), bound, NoiseKind::kGaussian, rng,
+                            scan.plots);
+      }
+    }
+    const int clutter = clutter_count(rng);
+    for (int c = 0; c < clutter; ++c) {
+      scan.plots.emplace_back((2.0 * unit(rng) - 1.0) * kHalfWidth,
+                              (2.0 * unit(rng) - 1.0) * kHalfWidth);
+    }
+  }
+  return scans;
+}
+
 MultiResult run_multi_object(const ExtendedSpec& spec, const Eigen::Matrix2d& noise, int runs,
                              std::uint64_t seed) {
   MultiResult r;
   long matched = 0, scored = 0, scans = 0, false_total = 0, one_number = 0;
   double gwd = 0.0, gwd2 = 0.0, centre2 = 0.0, changes = 0.0, cost_us = 0.0;
-  const Eigen::Matrix2d bound = 4.0 * noise;  // noise N(0, U / 4)
-  std::vector<Eigen::Vector2d> plots;
   std::vector<Eigen::Matrix2d> noises;
   for (int run = 0; run < runs; ++run) {
-    std::mt19937_64 rng(seed * 7919ULL + static_cast<std::uint64_t>(run));
-    std::poisson_distribution<int> object_count(kPlotsMean), clutter_count(kClutterMean);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const std::vector<MultiScan> run_scans =
+        multi_object_scans(seed * 7919ULL + static_cast<std::uint64_t>(run));
     ExtendedTracker tracker(spec);
     std::uint64_t number[kObjects] = {};
     int number_changes[kObjects] = {};
-    for (int k = 0; k * kPeriod <= kDuration + 1e-9; ++k) {
-      const double t = k * kPeriod;
-      plots.clear();
-      ObjectTruth truth[kObjects];
-      for (int o = 0; o < kObjects; ++o) {
-        truth[o] = truth_at(kMovers[o], t);
-        if (unit(rng) < kDetection) {
-          sample_object_plots(truth[o], object_count(rng), bound, NoiseKind::kGaussian, rng, plots);
-        }
-      }
-      const int clutter = clutter_count(rng);
-      for (int c = 0; c < clutter; ++c) {
-        plots.emplace_back((2.0 * unit(rng) - 1.0) * kHalfWidth,
-                           (2.0 * unit(rng) - 1.0) * kHalfWidth);
-      }
+    for (int k = 0; k < static_cast<int>(run_scans.size()); ++k) {
+      const double t = run_scans[k].time;
+      const std::vector<Eigen::Vector2d>& plots = run_scans[k].plots;
+      const std::vector<ObjectTruth>& truth = run_scans[k].truth;
       noises.assign(plots.size(), noise);
       const auto start = std::chrono::steady_clock::now();
       tracker.process(t, plots, noises);

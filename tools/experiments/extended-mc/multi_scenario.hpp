@@ -2,9 +2,11 @@
 // Several extended objects in clutter, two of them crossing, for the ExtendedTracker with
 // each estimator (issue 27, deliverable 5). Generated here, not a shipped YAML scenario.
 #include <cstdint>
+#include <vector>
 
 #include <Eigen/Core>
 
+#include "paper_scenario.hpp"
 #include "skytrack/extended/extended_spec.hpp"
 
 namespace skytrack::extended::experiment {
@@ -19,6 +21,15 @@ struct MultiResult {
   double false_tracks = 0.0;        // confirmed tracks on no object, mean per scan
   double scan_cost_us = 0.0;        // [us] mean ExtendedTracker::process per scan
 };
+
+/// One scan of the scenario: every object's plots (N(0, U / 4) noise, U of PaperScenario)
+/// then the clutter; `truth` the four objects at `time`.
+struct MultiScan {
+  double time = 0.0;
+  std::vector<Eigen::Vector2d> plots;
+  std::vector<ObjectTruth> truth;
+};
+std::vector<MultiScan> multi_object_scans(std::uint64_t seed);
 
 /// `runs` runs of the scenario (plots N(0, U/4) per object, Poisson clutter) with the
 /// tracker under `spec`; every plot is given `noise` as its covariance.
