@@ -13,6 +13,8 @@
 namespace skytrack::extended {
 namespace {
 
+constexpr double kScatter = 0.25;  // covariance of a point uniform over E(0, X) is X / 4
+
 // A plot's position in the tracking plane and its noise there: R_xy = J diag(sigma^2) J',
 // J = d(x, y)/d(position components) by central differences of approximate_position, so
 // Cartesian and polar plots (any platform attitude) take one path.
@@ -53,10 +55,11 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const PlotMea
 }
 
 double ExtendedTracker::gate_distance(const ExtendedTrack& track, const Eigen::Vector2d& z,
-                                      const Eigen::Matrix2d& noise,
+                                      const Eigen::Matrix2d& noise, double extent_weight,
                                       double* log_det) const noexcept {
   const PosMat H = position_matrix();
-  const Eigen::Matrix2d G = H * track.object.P * H.transpose() + track.object.extent + noise;
+  const Eigen::Matrix2d G =
+      H * track.object.P * H.transpose() + extent_weight * track.object.extent + noise;
   const Eigen::LLT<Eigen::Matrix2d> llt(G);
   if (llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
   const Eigen::Vector2d nu = z - track.position();
@@ -126,7 +129,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     noise /= static_cast<double>(group.size());
     gated_.clear();
     for (int t = 0; t < track_count; ++t) {
-      const double d2 = gate_distance(tracks_[t], mean, noise, nullptr);
+      const double d2 = gate_distance(tracks_[t], mean, noise, 1.0, nullptr);
       if (d2 <= spec_.gate) gated_.push_back({t, d2});
     }
     if (gated_.empty()) {
@@ -134,22 +137,32 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
       continue;
     }
     if (gated_.size() == 1) {
-      std::vector<int>& plots = track_plots_[gated_.front().track];
-      plots.insert(plots.end(), group.begin(), group.end());
+      const int t = gated_.front().track;
+      for (int i : group) {  // clutter beside the object stays out of its update
+        if (gate_distance(tracks_[t], positions_[i], noises_[i], kScatter, nullptr) <=
+            spec_.plot_gate) {
+          track_plots_[t].push_back(i);
+        }
+      }
       continue;
     }
     // Several tracks gate it (objects close or crossing): each plot to the track that
-    // explains it best, d^2 + ln det G (a Gaussian's negative log-likelihood).
+    // explains it best, d^2 + ln det G (a Gaussian's negative log-likelihood) with the
+    // spread of a plot about the centre, X / 4 (scatterers uniform over the ellipse).
     for (int i : group) {
       int best = gated_.front().track;
       double best_cost = std::numeric_limits<double>::infinity();
       for (const Gated& g : gated_) {
         double log_det = 0.0;
         const double cost =
-            gate_distance(tracks_[g.track], positions_[i], noises_[i], &log_det) + log_det;
+            gate_distance(tracks_[g.track], positions_[i], noises_[i], kScatter, &log_det) +
+            log_det;
         if (cost < best_cost) best_cost = cost, best = g.track;
       }
-      track_plots_[best].push_back(i);
+      if (gate_distance(tracks_[best], positions_[i], noises_[i], kScatter, nullptr) <=
+          spec_.plot_gate) {
+        track_plots_[best].push_back(i);
+      }
     }
   }
   for (int t = 0; t < track_count; ++t) {

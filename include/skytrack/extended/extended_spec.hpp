@@ -64,12 +64,16 @@ struct ExtendedSpec {
   /// A partition gates with a track when d^2 = nu' G^-1 nu <= gate, G = HPH' + X + R
   /// (the track's extent enters, so a large object gates its whole plot cloud) [chi^2, 2 dof].
   double gate = 4.0;
+  /// A plot of a gated partition enters the track's update when d^2 <= plot_gate with
+  /// G = HPH' + X/4 + R (X/4: the spread of scatterers uniform over the ellipse; its
+  /// outline is at d^2 = 4), which keeps clutter beside the object out [chi^2, 2 dof].
+  double plot_gate = 13.8;
   int min_partition_plots = 2;        // smaller partitions start no track
   int confirm_hits = 3;               // a tentative track is confirmed after this many updates...
   int tentative_max_misses = 1;       // ...and deleted after this many consecutive misses
   int delete_misses = 3;              // a confirmed track is deleted after this many misses
   double initial_speed_sigma = 20.0;  // [m/s] a new track's velocity prior (starts at 0)
-  double initial_accel_sigma = 2.0;   // [m/s^2]
+  double initial_accel_sigma = 0.5;   // [m/s^2] the process noise: more is fitted to noise
   double initial_extent_axis = 50.0;  // [m] floor of a new track's semi-axes
 };
 

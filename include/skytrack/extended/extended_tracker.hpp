@@ -71,8 +71,10 @@ class ExtendedTracker {
     int track = -1;
     double distance = 0.0;  // d^2
   };
+  /// d^2 of z from the track's centre with G = H P H' + extent_weight X + noise.
   double gate_distance(const ExtendedTrack& track, const Eigen::Vector2d& z,
-                       const Eigen::Matrix2d& noise, double* log_det) const noexcept;
+                       const Eigen::Matrix2d& noise, double extent_weight,
+                       double* log_det) const noexcept;
   void associate(std::span<const std::vector<int>> partitions, ExtendedScanReport& report);
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
   void manage(ExtendedScanReport& report);
