@@ -168,7 +168,9 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
   for (int t = 0; t < track_count; ++t) {
     ExtendedTrack& track = tracks_[t];
     const std::vector<int>& plots = track_plots_[t];
-    if (plots.empty()) continue;
+    // Fewer plots than start a track are taken as clutter in a scan the object was missed:
+    // one stray plot would drag the centre, velocity and extent off the object.
+    if (static_cast<int>(plots.size()) < std::max(1, spec_.min_partition_plots)) continue;
     plot_buffer_.clear();
     Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
     for (int i : plots) plot_buffer_.push_back(positions_[i]), noise += noises_[i];

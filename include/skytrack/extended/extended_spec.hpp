@@ -68,7 +68,7 @@ struct ExtendedSpec {
   /// G = HPH' + X/4 + R (X/4: the spread of scatterers uniform over the ellipse; its
   /// outline is at d^2 = 4), which keeps clutter beside the object out [chi^2, 2 dof].
   double plot_gate = 13.8;
-  int min_partition_plots = 2;        // smaller partitions start no track
+  int min_partition_plots = 2;  // fewer plots start no track and update no track
   int confirm_hits = 3;               // a tentative track is confirmed after this many updates...
   int tentative_max_misses = 1;       // ...and deleted after this many consecutive misses
   int delete_misses = 3;              // a confirmed track is deleted after this many misses
