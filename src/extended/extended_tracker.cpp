@@ -78,6 +78,7 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
     return report;
   }
   const double dt = started_ ? time - last_time_ : 0.0;
+  scan_dt_ = dt;
   started_ = true;
   last_time_ = time;
 
@@ -175,12 +176,40 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
     for (int i : plots) plot_buffer_.push_back(positions_[i]), noise += noises_[i];
     noise /= static_cast<double>(plots.size());
+    if (track.hits == 1 && scan_dt_ > 0.0) two_point_velocity(track);
     const UpdateStatus status = estimator_.update(track.object, plot_buffer_, noise);
     if (status == UpdateStatus::kNumericFailure) ++report.numeric_failures;
     track.plots = static_cast<int>(plots.size());
     ++report.updated;
   }
   for (const std::vector<int>* group : unassigned) initiate(*group, report);
+}
+
+void ExtendedTracker::two_point_velocity(ExtendedTrack& track) const noexcept {
+  // A new track started at rest; its second partition gives the velocity (two-point
+  // initiation). Without it the first innovation is the whole displacement (150 m for
+  // 15 m/s over 10 s), which MEM-EKF* reads as extent: semi-axes of kilometres.
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& z : plot_buffer_) mean += z;
+  mean /= static_cast<double>(plot_buffer_.size());
+  const Eigen::Vector2d v = (mean - track.position()) / scan_dt_;
+  KinVec& x = track.object.x;
+  x[0] = mean.x();
+  x[1] = v.x();
+  x[2] = mean.y();
+  x[3] = v.y();
+  KinMat P = KinMat::Zero();
+  const double pos_var = track.birth_variance;
+  const double vel_var = 2.0 * pos_var / (scan_dt_ * scan_dt_);
+  const double a2 = spec_.initial_accel_sigma * spec_.initial_accel_sigma;
+  for (int axis = 0; axis < 2; ++axis) {
+    P(2 * axis, 2 * axis) = pos_var;
+    P(2 * axis + 1, 2 * axis + 1) = vel_var;
+    P(2 * axis, 2 * axis + 1) = P(2 * axis + 1, 2 * axis) = pos_var / scan_dt_;
+    P(4 + axis, 4 + axis) = a2;
+  }
+  track.object.P = P;
+  track.object.S = P;
 }
 
 void ExtendedTracker::initiate(const std::vector<int>& group, ExtendedScanReport& report) {
@@ -210,6 +239,7 @@ void ExtendedTracker::initiate(const std::vector<int>& group, ExtendedScanReport
   track.id = next_id_++;
   track.object = estimator_.initiate(x, P, extent);
   track.hits = 1;
+  track.birth_variance = pos_var;
   track.plots = static_cast<int>(group.size());
   tracks_.push_back(track);
   ++report.initiated;

@@ -24,10 +24,11 @@ enum class ExtendedTrackStatus : std::uint8_t { kTentative, kConfirmed };
 struct ExtendedTrack {
   std::uint64_t id = 0;  // stable track number, from 1, never reused
   ExtendedTrackStatus status = ExtendedTrackStatus::kTentative;
-  ExtendedObject object;  // centre state, covariance, extent X
-  int hits = 0;           // scans it took plots in
-  int misses = 0;         // consecutive scans without plots
-  int plots = 0;          // plots it took in the last scan
+  ExtendedObject object;        // centre state, covariance, extent X
+  int hits = 0;                 // scans it took plots in
+  int misses = 0;               // consecutive scans without plots
+  int plots = 0;                // plots it took in the last scan
+  double birth_variance = 0.0;  // [m^2] its first centre's variance per axis
 
   Eigen::Vector2d position() const { return object.position(); }   // [m] centre
   Eigen::Vector2d velocity() const { return object.velocity(); }   // [m/s]
@@ -77,6 +78,7 @@ class ExtendedTracker {
                        double* log_det) const noexcept;
   void associate(std::span<const std::vector<int>> partitions, ExtendedScanReport& report);
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
+  void two_point_velocity(ExtendedTrack& track) const noexcept;
   void manage(ExtendedScanReport& report);
 
   ExtendedSpec spec_;
@@ -86,6 +88,7 @@ class ExtendedTracker {
   std::vector<std::uint64_t> deleted_;
   std::uint64_t next_id_ = 1;
   double last_time_ = 0.0;
+  double scan_dt_ = 0.0;  // [s] since the previous scan
   bool started_ = false;
   // Per-scan buffers, reused.
   std::vector<Eigen::Vector2d> positions_, plot_buffer_;
