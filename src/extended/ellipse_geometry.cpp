@@ -90,24 +90,34 @@ Ellipse minimum_enclosing_ellipse(std::span<const Eigen::Vector2d> points, doubl
   // c = sum u p, d = 2. An away step lowers the weight of the point deepest inside, which
   // makes the convergence linear instead of O(1 / tolerance).
   constexpr double kLifted = 3.0;  // d + 1
-  std::vector<double> u(n, 1.0 / n);
+  // Work about the points' mean and in units of their spread: the lifted (p, 1) are then
+  // well conditioned wherever the object is.
+  Eigen::Vector2d origin = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& p : points) origin += p;
+  origin /= n;
+  double scale = 0.0;
+  for (const Eigen::Vector2d& p : points)
+    scale = std::max(scale, (p - origin).cwiseAbs().maxCoeff());
+  if (!(scale > 0.0) || !std::isfinite(scale)) scale = 1.0;
+  std::vector<Eigen::Vector3d> q(n);
+  for (int i = 0; i < n; ++i) q[i] << (points[i] - origin) / scale, 1.0;
+
+  std::vector<double> u(n, 1.0 / n), m(n, 0.0);
   Eigen::Matrix3d X = Eigen::Matrix3d::Zero();
-  for (int i = 0; i < n; ++i) {
-    const Eigen::Vector3d q(points[i].x(), points[i].y(), 1.0);
-    X.noalias() += u[i] * q * q.transpose();
-  }
+  for (int i = 0; i < n; ++i) X.noalias() += u[i] * q[i] * q[i].transpose();
+  Eigen::Matrix3d X_inv;
   for (int it = 0; it < max_iterations; ++it) {
-    bool invertible = false;
-    Eigen::Matrix3d X_inv;
-    X.computeInverseWithCheck(X_inv, invertible);
-    if (!invertible) break;
+    if (it % 64 == 0) {  // m_i = q_i' X^-1 q_i afresh now and then; updated in between
+      bool invertible = false;
+      X.computeInverseWithCheck(X_inv, invertible);
+      if (!invertible) break;
+      for (int i = 0; i < n; ++i) m[i] = q[i].dot(X_inv * q[i]);
+    }
     int j = 0, i_min = -1;
     double m_max = -1.0, m_min = std::numeric_limits<double>::infinity();
     for (int i = 0; i < n; ++i) {
-      const Eigen::Vector3d q(points[i].x(), points[i].y(), 1.0);
-      const double m = q.dot(X_inv * q);
-      if (m > m_max) m_max = m, j = i;
-      if (u[i] > 0.0 && m < m_min) m_min = m, i_min = i;
+      if (m[i] > m_max) m_max = m[i], j = i;
+      if (u[i] > 0.0 && m[i] < m_min) m_min = m[i], i_min = i;
     }
     const double gap_up = m_max / kLifted - 1.0;
     const double gap_down = i_min >= 0 ? 1.0 - m_min / kLifted : 0.0;
@@ -124,16 +134,27 @@ Ellipse minimum_enclosing_ellipse(std::span<const Eigen::Vector2d> points, doubl
     for (double& w : u) w *= 1.0 - step;
     u[k] += step;
     if (u[k] < 0.0) u[k] = 0.0;
-    const Eigen::Vector3d q(points[k].x(), points[k].y(), 1.0);
-    X = (1.0 - step) * X + step * q * q.transpose();
+    // X' = (1 - s) X + s q_k q_k'; Sherman-Morrison with a = s / (1 - s):
+    // m_i' = (m_i - a (q_i' X^-1 q_k)^2 / (1 + a m_k)) / (1 - s).
+    X = (1.0 - step) * X + step * q[k] * q[k].transpose();
+    const double a = step / (1.0 - step);
+    const Eigen::Vector3d w = X_inv * q[k];
+    const double denom = 1.0 + a * m[k];
+    if (!(std::abs(denom) > 1e-12)) break;
+    for (int i = 0; i < n; ++i) {
+      const double c = q[i].dot(w);
+      m[i] = (m[i] - a * c * c / denom) / (1.0 - step);
+    }
+    X_inv = (X_inv - a * w * w.transpose() / denom) / (1.0 - step);
   }
   Ellipse e;
   Eigen::Matrix2d second = Eigen::Matrix2d::Zero();
   for (int i = 0; i < n; ++i) {
     e.centre += u[i] * points[i];
-    second.noalias() += u[i] * points[i] * points[i].transpose();
+    second.noalias() += u[i] * (points[i] - origin) * (points[i] - origin).transpose();
   }
-  e.shape = 2.0 * (second - e.centre * e.centre.transpose());
+  const Eigen::Vector2d mean_offset = e.centre - origin;
+  e.shape = 2.0 * (second - mean_offset * mean_offset.transpose());
   // Stopped at a tolerance, the ellipse can miss the outermost points by about that much:
   // grow it until it contains them all.
   const Eigen::LDLT<Eigen::Matrix2d> shape_ldlt(e.shape);
