@@ -35,13 +35,22 @@ Eigen::Matrix2d smf_extent_measurement(const SmfSpec& spec, std::span<const Eige
                                        const Eigen::Matrix2d& sensor_bound,
                                        SmfWorkspace& workspace) noexcept {
   // eq. 38-39: every plot's bounding ellipse.
-  const Eigen::Matrix2d omega = minkowski_sum_bound(centre_bound, noise_bound).shape;
+  const SumBound<Eigen::Matrix2d> omega_bound = minkowski_sum_bound(centre_bound, noise_bound);
+  const Eigen::Matrix2d& omega = omega_bound.shape;
   workspace.boundary.clear();
   for (const Eigen::Vector2d& z : plots) {
     append_ellipse_boundary(z, omega, spec.boundary_points, workspace.boundary);
   }
-  convex_hull(workspace.boundary, workspace.hull);                       // eq. 40 (Graham scan)
-  const Ellipse B = minimum_enclosing_ellipse(workspace.hull, 1e-4);     // eq. 41
+  convex_hull(workspace.boundary, workspace.hull);                    // eq. 40 (Graham scan)
+  const Ellipse B = minimum_enclosing_ellipse(workspace.hull, 1e-4);  // eq. 41
+  if (spec.literal_extent) {  // the printed steps: (B (-) (1 + 1/p) HSH' (-) U) / lambda
+    const double p = omega_bound.p > 0.0 ? omega_bound.p : 1.0;
+    const DifferenceResult d =
+        minkowski_difference(B.shape, Eigen::Matrix2d((1.0 + 1.0 / p) * centre_bound));
+    const DifferenceResult x = minkowski_difference(d.shape, sensor_bound);
+    const Eigen::Matrix2d X = x.empty ? Eigen::Matrix2d::Zero() : Eigen::Matrix2d(x.shape);
+    return floor_axes(X / spec.scattering, spec.min_axis);
+  }
   const DifferenceResult spread = minkowski_difference(B.shape, omega);  // eq. 42-46
   if (spread.empty) return floor_axes(Eigen::Matrix2d::Zero(), spec.min_axis);
   const DifferenceResult object = minkowski_difference(spread.shape, sensor_bound);  // eq. 47-48

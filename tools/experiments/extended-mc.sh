@@ -14,7 +14,8 @@
 #   --mean-plots P  Poisson mean of the object's plots per scan (default 10; not printed in
 #                   the paper)
 # Two tables for the one-object experiment: the Bayesian filters given R = U (the paper's
-# one printed noise matrix) and R = U/4 (the covariance of noise uniform in E(0, U)).
+# one printed noise matrix; with SMF-EOT also run with the extent step as printed) and
+# R = U/4 (the covariance of noise uniform in E(0, U)).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 binary=${SKYTRACK_EXTENDED_MC:-$root/build/tools/experiments/extended-mc/skytrack-extended-mc}
@@ -35,6 +36,6 @@ done
   echo "extended-mc: no binary at $binary (build target skytrack-extended-mc, or set SKYTRACK_EXTENDED_MC)" >&2
   exit 2
 }
-"$binary" --table single --runs "$runs" --seed "$seed" --mean-plots "$mean_plots" --bayes-noise bound
+"$binary" --table single --runs "$runs" --seed "$seed" --mean-plots "$mean_plots" --bayes-noise bound --literal-smf
 "$binary" --table single --runs "$runs" --seed "$seed" --mean-plots "$mean_plots" --bayes-noise moment
 "$binary" --table multi --runs "$multi_runs" --seed "$seed"

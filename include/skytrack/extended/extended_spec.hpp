@@ -33,6 +33,9 @@ struct SmfSpec {
   /// Weight of the scan's extent measurement against the predicted extent (1 = the paper's
   /// X_k = measured; < 1 smooths the hull's scan-to-scan jitter).
   double extent_gain = 1.0;
+  /// The extent step as printed (B (-) (1 + 1/p) H S H', then (-) U, divided by lambda)
+  /// instead of our reading (smf_eot.hpp); for the comparison in docs/extended.md only.
+  bool literal_extent = false;
   double min_axis = 1.0;  // [m] floor of an estimated semi-axis (empty Minkowski difference)
 };
 
@@ -68,7 +71,7 @@ struct ExtendedSpec {
   /// G = HPH' + X/4 + R (X/4: the spread of scatterers uniform over the ellipse; its
   /// outline is at d^2 = 4), which keeps clutter beside the object out [chi^2, 2 dof].
   double plot_gate = 13.8;
-  int min_partition_plots = 2;  // fewer plots start no track and update no track
+  int min_partition_plots = 2;        // fewer plots start no track and update no track
   int confirm_hits = 3;               // a tentative track is confirmed after this many updates...
   int tentative_max_misses = 1;       // ...and deleted after this many consecutive misses
   int delete_misses = 3;              // a confirmed track is deleted after this many misses

@@ -77,7 +77,7 @@ void sample_object_plots(const ObjectTruth& truth, int count, const Eigen::Matri
 }
 
 std::vector<FilterSetup> paper_filters(const PaperScenario& scenario,
-                                       const Eigen::Matrix2d& bayes_noise) {
+                                       const Eigen::Matrix2d& bayes_noise, bool literal_smf) {
   ExtendedSpec base;
   base.motion.time_constant = 40.0;
   base.motion.accel_noise = 0.5;
@@ -88,6 +88,12 @@ std::vector<FilterSetup> paper_filters(const PaperScenario& scenario,
   rm.spec.kind = EstimatorKind::kRandomMatrix;
   FilterSetup mem{"MEM-EKF*", base, bayes_noise};
   mem.spec.kind = EstimatorKind::kMemEkf;
+  if (literal_smf) {
+    FilterSetup literal = smf;
+    literal.name = "SMF-EOT, extent step as printed";
+    literal.spec.smf.literal_extent = true;
+    return {smf, literal, rm, mem};
+  }
   return {smf, rm, mem};
 }
 

@@ -64,7 +64,9 @@ McResult run_paper_monte_carlo(const PaperScenario& scenario, const FilterSetup&
 
 /// The comparison's three filters with the paper's parameters (lambda = 0.25, Q = 0.5^2,
 /// theta = 40 s). `bayes_noise` is what the random-matrix and MEM-EKF filters take as R.
+/// `literal_smf` adds SMF-EOT with the extent step as printed, after SMF-EOT.
 std::vector<FilterSetup> paper_filters(const PaperScenario& scenario,
-                                       const Eigen::Matrix2d& bayes_noise);
+                                       const Eigen::Matrix2d& bayes_noise,
+                                       bool literal_smf = false);
 
 }  // namespace skytrack::extended::experiment
