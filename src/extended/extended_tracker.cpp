@@ -44,14 +44,14 @@ ExtendedTracker::ExtendedTracker(const ExtendedSpec& spec) : spec_(spec), estima
 
 ExtendedScanReport ExtendedTracker::process(double time, std::span<const PlotMeasurement> plots,
                                             std::span<const std::vector<int>> partitions) {
-  std::vector<Eigen::Vector2d> positions(plots.size());
-  std::vector<Eigen::Matrix2d> noises(plots.size());
+  plane_positions_.resize(plots.size());
+  plane_noises_.resize(plots.size());
   for (std::size_t i = 0; i < plots.size(); ++i) {
-    if (!cartesian_plot(plots[i], positions[i], noises[i])) {
-      positions[i].setConstant(std::numeric_limits<double>::quiet_NaN());
+    if (!cartesian_plot(plots[i], plane_positions_[i], plane_noises_[i])) {
+      plane_positions_[i].setConstant(std::numeric_limits<double>::quiet_NaN());
     }
   }
-  return process(time, positions, noises, partitions);
+  return process(time, plane_positions_, plane_noises_, partitions);
 }
 
 double ExtendedTracker::gate_distance(const ExtendedTrack& track, const Eigen::Vector2d& z,
@@ -121,7 +121,8 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
   const int track_count = static_cast<int>(tracks_.size());
   track_plots_.resize(track_count);
   for (std::vector<int>& plots : track_plots_) plots.clear();
-  std::vector<const std::vector<int>*> unassigned;
+  std::vector<const std::vector<int>*>& unassigned = unassigned_;
+  unassigned.clear();
   for (const std::vector<int>& group : partitions) {
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();

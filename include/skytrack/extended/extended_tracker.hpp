@@ -96,6 +96,9 @@ class ExtendedTracker {
   std::vector<std::vector<int>> groups_;
   std::vector<std::vector<int>> track_plots_;
   std::vector<Gated> gated_;
+  std::vector<const std::vector<int>*> unassigned_;
+  std::vector<Eigen::Vector2d> plane_positions_;  // PlotMeasurements in the tracking plane
+  std::vector<Eigen::Matrix2d> plane_noises_;
 };
 
 }  // namespace skytrack::extended
