@@ -41,8 +41,8 @@ struct SmfSpec {
 
 struct RandomMatrixSpec {
   double scattering = 0.25;  // z in Y = z X + R (uniform scattering over the ellipse)
-  double extent_time_constant =
-      200.0;                  // [s] tau of the dof decay alpha = 2 + e^{-T/tau}(alpha - 2)
+  /// [s] tau of the extent's certainty decay, alpha = 2 + e^{-T/tau} (alpha - 2).
+  double extent_time_constant = 200.0;
   double initial_dof = 10.0;  // alpha_0
 };
 
@@ -64,8 +64,9 @@ struct ExtendedSpec {
 
   // Multi-object tracker (ExtendedTracker).
   double partition_distance = 100.0;  // [m] plots closer than this share a partition
-  /// A partition gates with a track when d^2 = nu' G^-1 nu <= gate, G = HPH' + X + R
-  /// (the track's extent enters, so a large object gates its whole plot cloud) [chi^2, 2 dof].
+  /// A partition gates with a track when its mean has d^2 = nu' G^-1 nu <= gate,
+  /// G = HPH' + X + R: the track's extent enters, so a large object gates its whole plot
+  /// cloud; 4 = within twice the ellipse G (a mean inside the object has d^2 <= 1).
   double gate = 4.0;
   /// A plot of a gated partition enters the track's update when d^2 <= plot_gate with
   /// G = HPH' + X/4 + R (X/4: the spread of scatterers uniform over the ellipse; its
