@@ -21,8 +21,8 @@ struct PaperScenario {
   Eigen::Vector2d start_position{800.0, -200.0};  // [m] x0 (first two of the printed six)
   Eigen::Vector2d start_velocity{9.82, -9.82};    // [m/s] 50 km/h
   double turn_rate = 4.5;     // [deg/s] "4.5" in [30, 70] s, "-4.5" in [90, 130] s
-  double major_axis = 170.0;  // [m] the object's semi-axes (not printed: a 340 m x 80 m
-  double minor_axis = 40.0;   //      ship, Feldmann et al. 2011), major axis along the heading
+  double major_axis = 170.0;  // [m] the object's semi-axes (not printed: our 340 m x 80 m
+  double minor_axis = 40.0;   //      ship), major axis along the heading
   Eigen::Matrix2d sensor_bound = Eigen::Vector2d(400.0, 100.0).asDiagonal();  // U [m^2]
   double mean_plots = 10.0;  // Poisson mean of the plots per scan (not printed)
   NoiseKind noise = NoiseKind::kBounded;
