@@ -15,9 +15,10 @@ namespace fs = std::filesystem;
 
 const fs::path kRoot = SKYTRACK_SOURCE_DIR;
 // The families compiled into skytrack_core (src/CMakeLists.txt).
-const char* const kCoreFamilies[] = {
-    "core",       "geometry",  "motion", "measurement", "filter",   "association", "clutter",
-    "preprocess", "bernoulli", "group",  "tracking",    "pipeline", "metrics",     "sim"};
+const char* const kCoreFamilies[] = {"core",      "geometry",    "motion",  "measurement",
+                                     "filter",    "association", "clutter", "preprocess",
+                                     "bernoulli", "extended",    "group",   "tracking",
+                                     "pipeline",  "metrics",     "sim"};
 const std::regex kInclude(R"(^\s*#\s*include\s*([<"])([^>"]+)[>"])");
 const std::regex kForbidden(
     R"(^(yaml-cpp/|spdlog/|dds/|ddsc/|idl/|simdjson|skytrack/(config/profile_loader|config/scenario_loader|config/yaml|io/|dds/|daemon/|asterix/)))");

@@ -1,0 +1,84 @@
+#pragma once
+// Parameters of extended mode: which extent estimator, its parameters, and the multi-object
+// tracker's partitioning, gating, initiation and deletion. Defaults are those of paper 002's
+// experiment (Liu et al. 2023, section 3.1) where it prints them; units in brackets.
+#include <cstdint>
+
+namespace skytrack::extended {
+
+/// The extent estimator a profile chooses (closed set).
+enum class EstimatorKind : std::uint8_t {
+  kSmf,           // SMF-EOT, the set-membership filter of paper 002
+  kRandomMatrix,  // Feldmann, Fraenken & Koch 2011, IEEE Trans. SP 59(4)
+  kMemEkf,        // Yang & Baum 2019, IEEE Trans. SP 67(18), MEM-EKF*
+};
+
+/// Kinematics of every estimator: state [x, vx, y, vy, ax, ay] (StateLayout{2, acceleration})
+/// with paper 002's Singer-like transition (eq. 49) per axis
+///   F = [1 T T^2/2; 0 1 T; 0 0 e^{-T/theta}],
+/// and the process noise entering through G = [T^2/2, T, 1]' per axis: Q6 = G Q2 G'.
+/// SMF-EOT takes Q2 = diag(q^2, q^2) as the bound E(0, Q6) of w_k; the Bayesian filters take
+/// it as the covariance of w_k (the paper prints one Q for all filters).
+struct MotionSpec {
+  double time_constant = 40.0;  // [s] theta
+  double accel_noise = 0.5;     // [m/s^2] q
+};
+
+struct SmfSpec {
+  double scattering = 0.25;  // lambda in C = lambda X (+) U (eq. 2)
+  /// The sensor bound U from a plot's noise R when the caller gives R, not U (the tracker):
+  /// U = k^2 R, i.e. the k-sigma ellipse. The experiment passes U directly.
+  double bound_sigmas = 3.0;
+  int boundary_points = 16;  // points per plot ellipse Omega_r given to the Graham scan
+  /// Weight of the scan's extent measurement against the predicted extent (1 = the paper's
+  /// X_k = measured; < 1 smooths the hull's scan-to-scan jitter).
+  double extent_gain = 1.0;
+  /// The extent step as printed (B (-) (1 + 1/p) H S H', then (-) U, divided by lambda)
+  /// instead of our reading (smf_eot.hpp); for the comparison in docs/extended.md only.
+  bool literal_extent = false;
+  double min_axis = 1.0;  // [m] floor of an estimated semi-axis (empty Minkowski difference)
+};
+
+struct RandomMatrixSpec {
+  double scattering = 0.25;  // z in Y = z X + R (uniform scattering over the ellipse)
+  /// [s] tau of the extent's certainty decay, alpha = 2 + e^{-T/tau} (alpha - 2).
+  double extent_time_constant = 200.0;
+  double initial_dof = 10.0;  // alpha_0
+};
+
+struct MemEkfSpec {
+  double scattering = 0.25;              // c_h, variance of the multiplicative noise (uniform)
+  double orientation_noise = 0.01;       // [rad^2 per scan] process noise of the orientation
+  double axis_noise = 1.0;               // [m^2 per scan] process noise of each semi-axis
+  double initial_orientation_var = 0.5;  // [rad^2]
+  double initial_axis_var = 2500.0;      // [m^2]
+};
+
+/// The whole of extended mode's profile section.
+struct ExtendedSpec {
+  EstimatorKind kind = EstimatorKind::kSmf;
+  MotionSpec motion;
+  SmfSpec smf;
+  RandomMatrixSpec random_matrix;
+  MemEkfSpec mem_ekf;
+
+  // Multi-object tracker (ExtendedTracker).
+  double partition_distance = 100.0;  // [m] plots closer than this share a partition
+  /// A partition gates with a track when its mean has d^2 = nu' G^-1 nu <= gate,
+  /// G = HPH' + X + R: the track's extent enters, so a large object gates its whole plot
+  /// cloud; 4 = within twice the ellipse G (a mean inside the object has d^2 <= 1).
+  double gate = 4.0;
+  /// A plot of a gated partition enters the track's update when d^2 <= plot_gate with
+  /// G = HPH' + X/4 + R (X/4: the spread of scatterers uniform over the ellipse; its
+  /// outline is at d^2 = 4), which keeps clutter beside the object out [chi^2, 2 dof].
+  double plot_gate = 13.8;
+  int min_partition_plots = 2;        // fewer plots start no track and update no track
+  int confirm_hits = 3;               // a tentative track is confirmed after this many updates...
+  int tentative_max_misses = 1;       // ...and deleted after this many consecutive misses
+  int delete_misses = 3;              // a confirmed track is deleted after this many misses
+  double initial_speed_sigma = 20.0;  // [m/s] a new track's velocity prior (starts at 0)
+  double initial_accel_sigma = 0.5;   // [m/s^2] the process noise: more is fitted to noise
+  double initial_extent_axis = 50.0;  // [m] floor of a new track's semi-axes
+};
+
+}  // namespace skytrack::extended

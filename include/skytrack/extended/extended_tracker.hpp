@@ -1,0 +1,104 @@
+#pragma once
+// Several extended objects in clutter (issue 27, deliverable 2): per scan, the plots are
+// partitioned (the caller's partitions, e.g. the preprocessing's mean shift, or the
+// distance partitioning), partitions are gated by each track's extent and given to the
+// nearest track (a partition gated by several tracks, e.g. two crossing objects, is split
+// plot by plot), each track is updated by the profile's estimator, partitions no track
+// gates start tentative tracks, which are confirmed when they keep taking partitions, and
+// tracks that stop taking them are deleted. Deterministic: no random numbers, ties broken
+// by track number and plot index.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "skytrack/extended/distance_partitioner.hpp"
+#include "skytrack/extended/extended_estimator.hpp"
+#include "skytrack/measurement/plot_measurement.hpp"
+
+namespace skytrack::extended {
+
+enum class ExtendedTrackStatus : std::uint8_t { kTentative, kConfirmed };
+
+struct ExtendedTrack {
+  std::uint64_t id = 0;  // stable track number, from 1, never reused
+  ExtendedTrackStatus status = ExtendedTrackStatus::kTentative;
+  ExtendedObject object;        // centre state, covariance, extent X
+  int hits = 0;                 // scans it took plots in
+  int misses = 0;               // consecutive scans without plots
+  int plots = 0;                // plots it took in the last scan
+  double birth_variance = 0.0;  // [m^2] its first centre's variance per axis
+
+  Eigen::Vector2d position() const { return object.position(); }   // [m] centre
+  Eigen::Vector2d velocity() const { return object.velocity(); }   // [m/s]
+  const Eigen::Matrix2d& extent() const { return object.extent; }  // [m^2] shape matrix
+};
+
+struct ExtendedScanReport {
+  bool skipped = false;    // non-finite or earlier time than the last scan: nothing changed
+  int plots = 0;           // usable plots
+  int rejected_plots = 0;  // non-finite positions or noise
+  int partitions = 0;
+  int updated = 0;
+  int initiated = 0;
+  int confirmed = 0;  // tentative -> confirmed this scan
+  int deleted = 0;
+  int numeric_failures = 0;
+};
+
+class ExtendedTracker {
+ public:
+  explicit ExtendedTracker(const ExtendedSpec& spec);
+
+  /// One scan of plots (their Cartesian tracking-frame positions and noise are used: polar
+  /// plots are placed with approximate_position and their noise is propagated to x, y).
+  /// `partitions`: plot-index groups from the preprocessing; empty = distance partitioning.
+  ExtendedScanReport process(double time, std::span<const PlotMeasurement> plots,
+                             std::span<const std::vector<int>> partitions = {});
+
+  /// The same with positions [m] and noise covariances [m^2] given directly (equal sizes).
+  ExtendedScanReport process(double time, std::span<const Eigen::Vector2d> positions,
+                             std::span<const Eigen::Matrix2d> noises,
+                             std::span<const std::vector<int>> partitions = {});
+
+  /// Live tracks, ordered by number.
+  std::span<const ExtendedTrack> tracks() const noexcept { return tracks_; }
+  /// Numbers of the tracks deleted by the last scan.
+  std::span<const std::uint64_t> deleted() const noexcept { return deleted_; }
+
+ private:
+  struct Gated {
+    int track = -1;
+    double distance = 0.0;  // d^2
+  };
+  /// d^2 of z from the track's centre with G = H P H' + extent_weight X + noise.
+  double gate_distance(const ExtendedTrack& track, const Eigen::Vector2d& z,
+                       const Eigen::Matrix2d& noise, double extent_weight,
+                       double* log_det) const noexcept;
+  void associate(std::span<const std::vector<int>> partitions, ExtendedScanReport& report);
+  void initiate(const std::vector<int>& group, ExtendedScanReport& report);
+  void two_point_velocity(ExtendedTrack& track) const noexcept;
+  void manage(ExtendedScanReport& report);
+
+  ExtendedSpec spec_;
+  ExtendedEstimator estimator_;
+  DistancePartitioner partitioner_;
+  std::vector<ExtendedTrack> tracks_;
+  std::vector<std::uint64_t> deleted_;
+  std::uint64_t next_id_ = 1;
+  double last_time_ = 0.0;
+  double scan_dt_ = 0.0;  // [s] since the previous scan
+  bool started_ = false;
+  // Per-scan buffers, reused.
+  std::vector<Eigen::Vector2d> positions_, plot_buffer_;
+  std::vector<Eigen::Matrix2d> noises_;
+  std::vector<std::vector<int>> groups_;
+  std::vector<std::vector<int>> track_plots_;
+  std::vector<Gated> gated_;
+  std::vector<const std::vector<int>*> unassigned_;
+  std::vector<Eigen::Vector2d> plane_positions_;  // PlotMeasurements in the tracking plane
+  std::vector<Eigen::Matrix2d> plane_noises_;
+};
+
+}  // namespace skytrack::extended

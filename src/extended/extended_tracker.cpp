@@ -1,0 +1,292 @@
+// Multi-object extended tracker: partition, gate by extent, update, initiate, delete
+// (see extended_tracker.hpp).
+#include "skytrack/extended/extended_tracker.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Cholesky>
+
+#include "skytrack/extended/ellipse_geometry.hpp"
+
+namespace skytrack::extended {
+namespace {
+
+constexpr double kScatter = 0.25;  // covariance of a point uniform over E(0, X) is X / 4
+
+// A plot's position in the tracking plane and its noise there: R_xy = J diag(sigma^2) J',
+// J = d(x, y)/d(position components) by central differences of approximate_position, so
+// Cartesian and polar plots (any platform attitude) take one path.
+bool cartesian_plot(const PlotMeasurement& m, Eigen::Vector2d& position, Eigen::Matrix2d& noise) {
+  position = approximate_position(m).head<2>();
+  const int components = m.model.position_components;
+  if (!position.allFinite() || m.z.size() < components || m.model.sigma.size() < components) {
+    return false;
+  }
+  noise.setZero();
+  for (int c = 0; c < components; ++c) {
+    const double h = 1e-6 * std::max(1.0, std::abs(m.z[c]));
+    PlotMeasurement shifted = m;
+    shifted.z[c] += h;
+    const Eigen::Vector2d up = approximate_position(shifted).head<2>();
+    shifted.z[c] -= 2.0 * h;
+    const Eigen::Vector2d down = approximate_position(shifted).head<2>();
+    const Eigen::Vector2d column = (up - down) / (2.0 * h);
+    noise.noalias() += m.model.sigma[c] * m.model.sigma[c] * column * column.transpose();
+  }
+  return noise.allFinite();
+}
+
+}  // namespace
+
+ExtendedTracker::ExtendedTracker(const ExtendedSpec& spec) : spec_(spec), estimator_(spec) {}
+
+ExtendedScanReport ExtendedTracker::process(double time, std::span<const PlotMeasurement> plots,
+                                            std::span<const std::vector<int>> partitions) {
+  plane_positions_.resize(plots.size());
+  plane_noises_.resize(plots.size());
+  for (std::size_t i = 0; i < plots.size(); ++i) {
+    if (!cartesian_plot(plots[i], plane_positions_[i], plane_noises_[i])) {
+      plane_positions_[i].setConstant(std::numeric_limits<double>::quiet_NaN());
+    }
+  }
+  return process(time, plane_positions_, plane_noises_, partitions);
+}
+
+double ExtendedTracker::gate_distance(const ExtendedTrack& track, const Eigen::Vector2d& z,
+                                      const Eigen::Matrix2d& noise, double extent_weight,
+                                      double* log_det) const noexcept {
+  const PosMat H = position_matrix();
+  const Eigen::Matrix2d G =
+      H * track.object.P * H.transpose() + extent_weight * track.object.extent + noise;
+  const Eigen::LLT<Eigen::Matrix2d> llt(G);
+  if (llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
+  const Eigen::Vector2d nu = z - track.position();
+  if (log_det) *log_det = 2.0 * std::log(llt.matrixL()(0, 0) * llt.matrixL()(1, 1));
+  return nu.dot(llt.solve(nu));
+}
+
+ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::Vector2d> positions,
+                                            std::span<const Eigen::Matrix2d> noises,
+                                            std::span<const std::vector<int>> partitions) {
+  ExtendedScanReport report;
+  deleted_.clear();
+  if (!std::isfinite(time) || (started_ && time < last_time_) ||
+      positions.size() != noises.size()) {
+    report.skipped = true;
+    return report;
+  }
+  const double dt = started_ ? time - last_time_ : 0.0;
+  scan_dt_ = dt;
+  started_ = true;
+  last_time_ = time;
+
+  const int n = static_cast<int>(positions.size());
+  positions_.assign(positions.begin(), positions.end());
+  noises_.assign(noises.begin(), noises.end());
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Matrix2d& R = noises_[i];
+    if (!positions_[i].allFinite() || !R.allFinite() || !(R(0, 0) > 0.0) || !(R(1, 1) > 0.0)) {
+      positions_[i].setConstant(std::numeric_limits<double>::quiet_NaN());
+      ++report.rejected_plots;
+    }
+  }
+  report.plots = n - report.rejected_plots;
+
+  for (ExtendedTrack& track : tracks_) {
+    if (dt > 0.0) estimator_.predict(track.object, dt);
+    track.plots = 0;
+  }
+  if (partitions.empty()) {
+    partitioner_.partition(positions_, spec_.partition_distance, groups_);
+  } else {  // the caller's groups, without unusable or out-of-range plots
+    groups_.clear();
+    for (const std::vector<int>& group : partitions) {
+      groups_.emplace_back();
+      for (int i : group) {
+        if (i >= 0 && i < n && positions_[i].allFinite()) groups_.back().push_back(i);
+      }
+      if (groups_.back().empty()) groups_.pop_back();
+    }
+  }
+  report.partitions = static_cast<int>(groups_.size());
+  associate(groups_, report);
+  manage(report);
+  return report;
+}
+
+void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
+                                ExtendedScanReport& report) {
+  const int track_count = static_cast<int>(tracks_.size());
+  track_plots_.resize(track_count);
+  for (std::vector<int>& plots : track_plots_) plots.clear();
+  std::vector<const std::vector<int>*>& unassigned = unassigned_;
+  unassigned.clear();
+  for (const std::vector<int>& group : partitions) {
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+    for (int i : group) mean += positions_[i], noise += noises_[i];
+    mean /= static_cast<double>(group.size());
+    noise /= static_cast<double>(group.size());
+    gated_.clear();
+    for (int t = 0; t < track_count; ++t) {
+      const double d2 = gate_distance(tracks_[t], mean, noise, 1.0, nullptr);
+      if (d2 <= spec_.gate) gated_.push_back({t, d2});
+    }
+    if (gated_.empty()) {
+      unassigned.push_back(&group);
+      continue;
+    }
+    if (gated_.size() == 1) {
+      const int t = gated_.front().track;
+      for (int i : group) {  // clutter beside the object stays out of its update
+        if (gate_distance(tracks_[t], positions_[i], noises_[i], kScatter, nullptr) <=
+            spec_.plot_gate) {
+          track_plots_[t].push_back(i);
+        }
+      }
+      continue;
+    }
+    // Several tracks gate it (objects close or crossing): each plot to the track that
+    // explains it best, d^2 + ln det G (a Gaussian's negative log-likelihood) with the
+    // spread of a plot about the centre, X / 4 (scatterers uniform over the ellipse).
+    for (int i : group) {
+      int best = gated_.front().track;
+      double best_cost = std::numeric_limits<double>::infinity();
+      for (const Gated& g : gated_) {
+        double log_det = 0.0;
+        const double cost =
+            gate_distance(tracks_[g.track], positions_[i], noises_[i], kScatter, &log_det) +
+            log_det;
+        if (cost < best_cost) best_cost = cost, best = g.track;
+      }
+      if (gate_distance(tracks_[best], positions_[i], noises_[i], kScatter, nullptr) <=
+          spec_.plot_gate) {
+        track_plots_[best].push_back(i);
+      }
+    }
+  }
+  for (int t = 0; t < track_count; ++t) {
+    ExtendedTrack& track = tracks_[t];
+    const std::vector<int>& plots = track_plots_[t];
+    // Fewer plots than start a track are taken as clutter in a scan the object was missed:
+    // one stray plot would drag the centre, velocity and extent off the object.
+    if (static_cast<int>(plots.size()) < std::max(1, spec_.min_partition_plots)) continue;
+    plot_buffer_.clear();
+    Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+    for (int i : plots) plot_buffer_.push_back(positions_[i]), noise += noises_[i];
+    noise /= static_cast<double>(plots.size());
+    if (track.hits == 1 && scan_dt_ > 0.0) two_point_velocity(track);
+    const UpdateStatus status = estimator_.update(track.object, plot_buffer_, noise);
+    if (status == UpdateStatus::kNumericFailure) ++report.numeric_failures;
+    track.plots = static_cast<int>(plots.size());
+    ++report.updated;
+  }
+  for (const std::vector<int>* group : unassigned) initiate(*group, report);
+}
+
+void ExtendedTracker::two_point_velocity(ExtendedTrack& track) const noexcept {
+  // A new track started at rest; its second partition gives the velocity (two-point
+  // initiation). Without it the first innovation is the whole displacement (150 m for
+  // 15 m/s over 10 s), which MEM-EKF* reads as extent: semi-axes of kilometres.
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& z : plot_buffer_) mean += z;
+  mean /= static_cast<double>(plot_buffer_.size());
+  const Eigen::Vector2d v = (mean - track.position()) / scan_dt_;
+  KinVec& x = track.object.x;
+  x[0] = mean.x();
+  x[1] = v.x();
+  x[2] = mean.y();
+  x[3] = v.y();
+  KinMat P = KinMat::Zero();
+  const double pos_var = track.birth_variance;
+  const double vel_var = 2.0 * pos_var / (scan_dt_ * scan_dt_);
+  const double a2 = spec_.initial_accel_sigma * spec_.initial_accel_sigma;
+  for (int axis = 0; axis < 2; ++axis) {
+    P(2 * axis, 2 * axis) = pos_var;
+    P(2 * axis + 1, 2 * axis + 1) = vel_var;
+    P(2 * axis, 2 * axis + 1) = P(2 * axis + 1, 2 * axis) = pos_var / scan_dt_;
+    P(4 + axis, 4 + axis) = a2;
+  }
+  track.object.P = P;
+  track.object.S = P;
+}
+
+void ExtendedTracker::initiate(const std::vector<int>& group, ExtendedScanReport& report) {
+  if (static_cast<int>(group.size()) < spec_.min_partition_plots) return;
+  const double count = static_cast<double>(group.size());
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+  for (int i : group) mean += positions_[i], noise += noises_[i];
+  mean /= count;
+  noise /= count;
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  for (int i : group)
+    scatter.noalias() += (positions_[i] - mean) * (positions_[i] - mean).transpose();
+  // Scatterers uniform over an ellipse X have covariance X / 4.
+  const EllipseAxes axes = ellipse_axes(4.0 * (scatter / count - noise));
+  const double floor = spec_.initial_extent_axis;
+  const Eigen::Matrix2d extent =
+      shape_from_axes(std::max(axes.major, floor), std::max(axes.minor, floor), axes.orientation);
+  KinVec x = KinVec::Zero();
+  x[0] = mean.x();
+  x[2] = mean.y();
+  const double pos_var = extent.trace() / (4.0 * count) + noise.trace();
+  const double v2 = spec_.initial_speed_sigma * spec_.initial_speed_sigma;
+  const double a2 = spec_.initial_accel_sigma * spec_.initial_accel_sigma;
+  const KinMat P = (KinVec() << pos_var, v2, pos_var, v2, a2, a2).finished().asDiagonal();
+  ExtendedTrack track;
+  track.id = next_id_++;
+  track.object = estimator_.initiate(x, P, extent);
+  track.hits = 1;
+  track.birth_variance = pos_var;
+  track.plots = static_cast<int>(group.size());
+  tracks_.push_back(track);
+  ++report.initiated;
+}
+
+void ExtendedTracker::manage(ExtendedScanReport& report) {
+  const std::uint64_t first_new = next_id_ - static_cast<std::uint64_t>(report.initiated);
+  for (ExtendedTrack& track : tracks_) {
+    if (track.id >= first_new) continue;  // born this scan
+    if (track.plots > 0) {
+      ++track.hits;
+      track.misses = 0;
+      if (track.status == ExtendedTrackStatus::kTentative && track.hits >= spec_.confirm_hits) {
+        track.status = ExtendedTrackStatus::kConfirmed;
+        ++report.confirmed;
+      }
+    } else {
+      ++track.misses;
+    }
+  }
+  // A tentative track whose centre lies inside an older track's ellipse duplicates it.
+  auto lost = [this](const ExtendedTrack& track) {
+    if (!track.object.x.allFinite() || !track.object.extent.allFinite()) return true;
+    const int limit = track.status == ExtendedTrackStatus::kConfirmed ? spec_.delete_misses
+                                                                      : spec_.tentative_max_misses;
+    if (track.misses >= limit) return true;
+    if (track.status != ExtendedTrackStatus::kTentative) return false;
+    for (const ExtendedTrack& other : tracks_) {
+      if (other.id >= track.id) break;  // ordered by number: only older ones
+      const Eigen::Vector2d d = track.position() - other.position();
+      const Eigen::LLT<Eigen::Matrix2d> llt(other.object.extent);
+      if (llt.info() == Eigen::Success && d.dot(llt.solve(d)) < 1.0) return true;
+    }
+    return false;
+  };
+  for (const ExtendedTrack& track : tracks_) {
+    if (lost(track)) {
+      deleted_.push_back(track.id);
+      ++report.deleted;
+    }
+  }
+  if (!deleted_.empty()) {
+    std::erase_if(tracks_, [this](const ExtendedTrack& track) {
+      return std::find(deleted_.begin(), deleted_.end(), track.id) != deleted_.end();
+    });
+  }
+}
+
+}  // namespace skytrack::extended
