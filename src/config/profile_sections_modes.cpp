@@ -1,5 +1,5 @@
 // Each estimator mode's own profile section (docs/estimators.md): `point` (with the shape of
-// profiles before mode sections) and `bernoulli`.
+// profiles before mode sections), `bernoulli` and `group`.
 #include <algorithm>
 #include <iterator>
 #include <string>
@@ -119,18 +119,61 @@ void read_bernoulli(YamlSection s, YamlSection& root, TrackingProfile& p) {
   s.finish();
 }
 
+void read_group(YamlSection s, TrackingProfile& p) {
+  group::GroupSpec& g = p.group;
+  g.preprocessing = p.clutter_rejection;
+  read_enum(s, "motion", g.motion,
+            {group::GroupMotion::kConstantVelocity, group::GroupMotion::kCoordinatedTurn});
+  s.number("turn_rate", g.turn_rate, Range{-1.0, 1.0});
+  s.integer("boxes_per_group", g.boxes_per_group, Range{1.0, 1e5});
+  s.number("position_width", g.position_width, Range{1e-3, 1e6});
+  s.number("velocity_width", g.velocity_width, Range{1e-3, kMaxSpeed});
+  s.number("jitter", g.jitter, Range::probability());
+  s.number("measurement_box_padding", g.measurement_box_padding, Range{0.0, 1e6});
+  s.integer("births_per_box", g.births_per_box, Range{0.0, 1e4});
+  s.integer("births_per_estimate", g.births_per_estimate, Range{0.0, 1e4});
+  s.number("birth_mass_per_box", g.birth_mass_per_box, Range::open_probability());
+  s.number("birth_speed", g.birth_speed, Range{0.0, kMaxSpeed});
+  s.number("survival_probability", g.survival_probability, Range::open_probability());
+  s.number("detection_probability", g.detection_probability, Range{0.0, 1.0, true, false});
+  s.number("clutter_rate", g.clutter_rate, Range{0.0, 1e6});
+  s.number("surveillance_area", g.surveillance_area, Range{1.0, 1e14});
+  read_enum(s, "labels", g.labels, {group::LabelModel::kDouble, group::LabelModel::kSingle});
+  s.number("extraction_threshold", g.extraction_threshold, kOpenUnit);
+  s.integer("max_missed", g.max_missed, Range{0.0, 1000.0});
+  s.boolean("exclusive_cells", g.exclusive_cells);
+  s.number("shape_smoothing", g.shape_smoothing, Range{0.0, 1.0, true, false});
+  s.number("measurement_sigma", g.measurement_sigma, Range{0.0, 1e6});
+  s.number("member_detection_probability", g.member_detection_probability,
+           Range{0.0, 1.0, true, false});
+  s.number("readmit_distance", g.readmit_distance, Range{0.0, 1e6});
+  std::int64_t seed = static_cast<std::int64_t>(g.seed);
+  s.integer("seed", seed, Range::non_negative());
+  g.seed = static_cast<std::uint64_t>(seed);
+  s.finish();
+}
+
+/// A mode's own section: read when it is the profile's mode, refused otherwise.
+template <class Read>
+void mode_section(YamlSection& root, TrackingProfile& p, TrackingMode mode, const Read& read) {
+  const std::string key(to_string(mode));
+  if (p.mode == mode) {
+    if (p.dimension == 3) root.error("dimension", "mode " + key + " tracks in 2-D (2 or auto)");
+    read(root.section(key));
+  } else if (root.has(key)) {
+    root.section(key);
+    root.error(key, "applies to mode: " + key + " only (this profile's mode is " +
+                        std::string(to_string(p.mode)) + ")");
+  }
+}
+
 }  // namespace
 
 void read_mode_sections(YamlSection& root, ErrorList& errors, TrackingProfile& p) {
   read_point(root, errors, p);
-  if (p.mode == TrackingMode::kBernoulli) {
-    if (p.dimension == 3) root.error("dimension", "mode bernoulli tracks in 2-D (2 or auto)");
-    read_bernoulli(root.section("bernoulli"), root, p);
-  } else if (root.has("bernoulli")) {
-    root.section("bernoulli");
-    root.error("bernoulli", "applies to mode: bernoulli only (this profile's mode is " +
-                                std::string(to_string(p.mode)) + ")");
-  }
+  mode_section(root, p, TrackingMode::kBernoulli,
+               [&](YamlSection s) { read_bernoulli(s, root, p); });
+  mode_section(root, p, TrackingMode::kGroup, [&](YamlSection s) { read_group(s, p); });
 }
 
 }  // namespace skytrack::config::detail

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "skytrack/bernoulli/bernoulli_tracker.hpp"
+#include "skytrack/group/group_estimator.hpp"
 #include "skytrack/tracking/point_tracker.hpp"
 
 namespace skytrack {
@@ -24,11 +25,16 @@ Expected<EstimatorStages> EstimatorStages::create(const config::TrackingProfile&
       estimator = std::make_unique<bernoulli::BernoulliTracker>(std::move(*watch));
       break;
     }
-    case config::TrackingMode::kGroup:
+    case config::TrackingMode::kGroup: {
+      auto groups = group::GroupEstimator::create(profile);
+      if (!groups) return unexpected(groups.error());
+      estimator = std::make_unique<group::GroupEstimator>(std::move(*groups));
+      break;
+    }
     case config::TrackingMode::kExtended:
       return make_error("profile '" + profile.identity.name + "': mode '" +
                         std::string(config::to_string(profile.mode)) +
-                        "' is not implemented yet (point and bernoulli are)");
+                        "' is not implemented yet (point, bernoulli and group are)");
   }
   return EstimatorStages(Preprocessing(profile, dims), std::move(estimator));
 }
@@ -40,6 +46,7 @@ void EstimatorStages::process(const PlotScan& look, const LookSources* sources, 
   report.predict = std::chrono::duration_cast<std::chrono::microseconds>(
       std::chrono::steady_clock::now() - start);
   estimator_->process(look, pre_, frame, report);
+  pre_.finish();
 }
 
 }  // namespace skytrack

@@ -21,6 +21,11 @@ bool carries_height(const PlotScan& batch) {
   });
 }
 
+/// The modes whose estimators track in the plane.
+bool two_dimensional(config::TrackingMode mode) {
+  return mode == config::TrackingMode::kBernoulli || mode == config::TrackingMode::kGroup;
+}
+
 }  // namespace
 
 std::optional<std::string> invalid_plot_reason(const Plot& plot,
@@ -86,7 +91,7 @@ std::string timeline_change(const ScanResult& result) {
 }
 
 int tracker_dimension(const config::TrackingProfile& profile, const PlotScan& first) {
-  if (profile.mode == config::TrackingMode::kBernoulli) return 2;  // its filter's state
+  if (two_dimensional(profile.mode)) return 2;
   if (profile.dimension == 2 || profile.dimension == 3) return profile.dimension;
   return carries_height(first) ? 3 : 2;
 }
@@ -105,7 +110,7 @@ Expected<Pipeline> Pipeline::create(const config::TrackingProfile& profile) {
   // or mode fails at start, not at the first batch (which relies on it).
   for (const int dims : {2, 3}) {
     if (profile.dimension != 0 && profile.dimension != dims) continue;
-    if (dims == 3 && profile.mode == config::TrackingMode::kBernoulli) continue;
+    if (dims == 3 && two_dimensional(profile.mode)) continue;
     if (auto probe = EstimatorStages::create(profile, dims); !probe) {
       return unexpected(probe.error());
     }

@@ -177,7 +177,6 @@ void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame&
   }
   report_tracks(scan.time, report, frame);
   report.numeric_failures += std::exchange(numeric_failures_, 0);
-  pre.finish();
   pre_ = nullptr;
   report.manage = since(start);
 }

@@ -147,6 +147,31 @@ initial_mode_probabilities: [1.0]
   EXPECT_THAT(other.error().message, HasSubstr("applies to mode: bernoulli only"));
 }
 
+TEST(ProfileLoader, GroupModeReadsItsSectionAndTakesTheCommonPreprocessing) {
+  const auto profile = parse_profile(R"(profile: {name: g, version: 1}
+mode: group
+clutter_rejection: {enabled: true, kernel_bandwidth: 30.0}
+group: {motion: constant_velocity, labels: single, max_missed: 0, clutter_rate: 4.0}
+)",
+                                     "g.yaml");
+  ASSERT_TRUE(profile) << profile.error().message;
+  EXPECT_EQ(profile->group.motion, group::GroupMotion::kConstantVelocity);
+  EXPECT_EQ(profile->group.labels, group::LabelModel::kSingle);
+  EXPECT_EQ(profile->group.max_missed, 0);
+  EXPECT_DOUBLE_EQ(profile->group.clutter_rate, 4.0);
+  EXPECT_DOUBLE_EQ(profile->group.preprocessing.kernel_bandwidth, 30.0);
+  // a group section in a point profile, and a point section in a group profile
+  const auto in_point = parse_profile(std::string(kHeader) + "group: {}\n", "g.yaml");
+  ASSERT_FALSE(in_point);
+  EXPECT_THAT(in_point.error().message, HasSubstr("applies to mode: group only"));
+  const auto unknown = parse_profile(
+      "profile: {name: g, version: 1}\nmode: group\n"
+      "group: {lables: single}\n",
+      "g.yaml");
+  ASSERT_FALSE(unknown);
+  EXPECT_THAT(unknown.error().message, HasSubstr("group.lables"));
+}
+
 TEST(ProfileLoader, ShippedDefaultProfileEqualsTheCompiledDefaults) {
   // The file documents the defaults; it must not drift from the struct initialisers.
   auto profile = load_profile(kDefaultProfile);

@@ -48,7 +48,25 @@ struct Bernoulli {
     return p;
   }
 };
-using kModes = ::testing::Types<PointBranching, PointPlainJpda, PointGnn, Bernoulli>;
+/// Groups on straight courses. The stream's targets are single plots kilometres apart: a
+/// kernel bandwidth of kilometres keeps each as a cell of its own.
+struct Group {
+  static config::TrackingProfile profile() {
+    config::TrackingProfile p = testing::test_profile();
+    p.mode = config::TrackingMode::kGroup;
+    p.dimension = 2;
+    p.clutter_rejection.enabled = true;
+    p.clutter_rejection.kernel_bandwidth = 2000.0;
+    p.clutter_rejection.mean_shift.bandwidth = 500.0;
+    p.group.motion = group::GroupMotion::kConstantVelocity;
+    p.group.surveillance_area = 6.4e9;
+    p.group.position_width = 100.0;
+    p.group.birth_speed = 300.0;
+    p.group.velocity_width = 50.0;
+    return p;
+  }
+};
+using kModes = ::testing::Types<PointBranching, PointPlainJpda, PointGnn, Bernoulli, Group>;
 
 using testing::cartesian;
 

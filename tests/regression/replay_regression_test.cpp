@@ -39,7 +39,8 @@ const Case kCases[] = {
     {"airborne_30_targets", "airborne"},
     {"airport_surface", "ground_surveillance"},
     {"paper003_exp1_racetrack_figure_eight", "dense_clutter"},
-    {"paper001_mmbpf", "bernoulli"},  // mode: bernoulli
+    {"paper001_mmbpf", "bernoulli"},    // mode: bernoulli
+    {"paper000_exp1_groups", "group"},  // mode: group
 };
 
 std::string source(const std::string& relative) {

@@ -11,7 +11,7 @@
 
 #include <Eigen/Core>
 
-#include "skytrack/config/profile.hpp"
+#include "skytrack/clutter/clutter_rejection_spec.hpp"
 
 namespace skytrack::clutter {
 

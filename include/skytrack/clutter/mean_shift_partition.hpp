@@ -12,7 +12,7 @@
 #include <Eigen/Core>
 
 #include "skytrack/clutter/clutter_rejector.hpp"
-#include "skytrack/config/profile.hpp"
+#include "skytrack/clutter/clutter_rejection_spec.hpp"
 
 namespace skytrack::clutter {
 

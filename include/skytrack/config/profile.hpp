@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "skytrack/bernoulli/bernoulli_spec.hpp"
+#include "skytrack/clutter/clutter_rejection_spec.hpp"
+#include "skytrack/group/group_spec.hpp"
 
 namespace skytrack::config {
 
@@ -107,26 +109,6 @@ struct AssociationSpec {
   int max_exact_cluster_size = 32;  // [tracks] exact JPDA marginals up to this cluster size
   int k_best = 100;                 // joint events from Murty's k-best above it
   bool operator==(const AssociationSpec&) const = default;
-};
-
-/// Mean-shift partitioning of the kept plots (paper 000 eq. 9-10).
-struct MeanShiftSpec {
-  double bandwidth = 500.0;       // [m] Gaussian kernel bandwidth
-  double merge_distance = 100.0;  // [m] converged points closer than this form one cell
-  int max_iterations = 50;        // per plot
-  double tolerance = 1.0;         // [m] a point has converged when it moves less than this
-  bool operator==(const MeanShiftSpec&) const = default;
-};
-
-/// Kernel-density clutter rejection, paper 000 §3.1: a plot whose density (eq. 6-7) is below
-/// tau = f_min + (beta / n_f) (f_max - f_min) (eq. 8) is clutter.
-struct ClutterRejectionSpec {
-  bool enabled = false;             // default.yaml says why it is off for point targets
-  double kernel_bandwidth = 500.0;  // h [m]
-  int beta = 1;                     // in [1, n_f); raise it in heavier clutter
-  int n_f = 10;                     // number of equal bins of [f_min, f_max]
-  MeanShiftSpec mean_shift;
-  bool operator==(const ClutterRejectionSpec&) const = default;
 };
 
 /// M-of-N plot-to-plot initiation with a speed gate.
@@ -309,6 +291,9 @@ struct TrackingProfile {
   // probabilities are the common motion_models, mode_transition (per scan) and
   // initial_mode_probabilities: the loader copies them in.
   bernoulli::BernoulliSpec bernoulli;
+  // mode: group. Its preprocessing is the common clutter_rejection section (the loader
+  // copies it in).
+  group::GroupSpec group;
   bool operator==(const TrackingProfile&) const = default;
 };
 

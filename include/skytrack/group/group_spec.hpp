@@ -4,8 +4,9 @@
 // are this implementation's choices, each marked "(ours)" and explained in docs/group.md.
 // 2-D: boxes are intervals over the state [x vx y vy] in the tracking frame, SI units.
 #include <cstdint>
+#include <string_view>
 
-#include "skytrack/config/profile.hpp"
+#include "skytrack/clutter/clutter_rejection_spec.hpp"
 
 namespace skytrack::group {
 
@@ -20,6 +21,13 @@ enum class LabelModel : std::uint8_t {
   kDouble,  // (l1, l2): a group survives up to `max_missed` scans without detection
   kSingle,  // l1 only: a group not detected in one scan dies (the paper's LBP-PHD-single)
 };
+
+constexpr std::string_view to_string(GroupMotion motion) {
+  return motion == GroupMotion::kConstantVelocity ? "constant_velocity" : "coordinated_turn";
+}
+constexpr std::string_view to_string(LabelModel labels) {
+  return labels == LabelModel::kDouble ? "double" : "single";
+}
 
 struct GroupSpec {
   // Motion (eq. 14).
@@ -72,6 +80,7 @@ struct GroupSpec {
   config::ClutterRejectionSpec preprocessing = default_preprocessing();
 
   std::uint64_t seed = 1;  // the filter's std::mt19937_64
+  bool operator==(const GroupSpec&) const = default;
 
   static config::ClutterRejectionSpec default_preprocessing() {
     config::ClutterRejectionSpec spec;
