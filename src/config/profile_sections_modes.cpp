@@ -1,5 +1,5 @@
 // Each estimator mode's own profile section (docs/estimators.md): `point` (with the shape of
-// profiles before mode sections), `bernoulli` and `group`.
+// profiles before mode sections), `bernoulli`, `group` and `extended`.
 #include <algorithm>
 #include <iterator>
 #include <string>
@@ -153,6 +153,47 @@ void read_group(YamlSection s, TrackingProfile& p) {
   s.finish();
 }
 
+void read_extended(YamlSection s, TrackingProfile& p) {
+  extended::ExtendedSpec& e = p.extended;
+  read_enum(s, "estimator", e.kind,
+            {extended::EstimatorKind::kSmf, extended::EstimatorKind::kRandomMatrix,
+             extended::EstimatorKind::kMemEkf});
+  YamlSection motion = s.section("motion");
+  motion.number("time_constant", e.motion.time_constant, Range{1e-3, 1e6});
+  motion.number("accel_noise", e.motion.accel_noise, Range{0.0, kMaxAccel});
+  motion.finish();
+  YamlSection smf = s.section("smf");
+  smf.number("scattering", e.smf.scattering, Range{1e-3, 10.0});
+  smf.number("bound_sigmas", e.smf.bound_sigmas, Range{0.1, 10.0});
+  smf.integer("boundary_points", e.smf.boundary_points, Range{4.0, 1024.0});
+  smf.number("extent_gain", e.smf.extent_gain, Range{0.0, 1.0, true, false});
+  smf.number("min_axis", e.smf.min_axis, Range{1e-3, 1e5});
+  smf.finish();
+  YamlSection rm = s.section("random_matrix");
+  rm.number("scattering", e.random_matrix.scattering, Range{1e-3, 10.0});
+  rm.number("extent_time_constant", e.random_matrix.extent_time_constant, Range{1e-3, 1e7});
+  rm.number("initial_dof", e.random_matrix.initial_dof, Range{2.0, 1e6, true, false});
+  rm.finish();
+  YamlSection mem = s.section("mem_ekf");
+  mem.number("scattering", e.mem_ekf.scattering, Range{1e-3, 10.0});
+  mem.number("orientation_noise", e.mem_ekf.orientation_noise, Range{0.0, 10.0});
+  mem.number("axis_noise", e.mem_ekf.axis_noise, Range{0.0, 1e8});
+  mem.number("initial_orientation_var", e.mem_ekf.initial_orientation_var, Range{1e-6, 10.0});
+  mem.number("initial_axis_var", e.mem_ekf.initial_axis_var, Range{1e-3, 1e10});
+  mem.finish();
+  s.number("partition_distance", e.partition_distance, Range{1e-3, 1e6});
+  s.number("gate", e.gate, Range{1e-3, 1e4});
+  s.number("plot_gate", e.plot_gate, Range{1e-3, 1e4});
+  s.integer("min_partition_plots", e.min_partition_plots, Range{1.0, 1e4});
+  s.integer("confirm_hits", e.confirm_hits, Range{1.0, 1000.0});
+  s.integer("tentative_max_misses", e.tentative_max_misses, Range{1.0, 1000.0});
+  s.integer("delete_misses", e.delete_misses, Range{1.0, 1000.0});
+  s.number("initial_speed_sigma", e.initial_speed_sigma, Range{1e-3, kMaxSpeed});
+  s.number("initial_accel_sigma", e.initial_accel_sigma, Range{1e-3, kMaxAccel});
+  s.number("initial_extent_axis", e.initial_extent_axis, Range{1e-3, 1e5});
+  s.finish();
+}
+
 /// A mode's own section: read when it is the profile's mode, refused otherwise.
 template <class Read>
 void mode_section(YamlSection& root, TrackingProfile& p, TrackingMode mode, const Read& read) {
@@ -174,6 +215,7 @@ void read_mode_sections(YamlSection& root, ErrorList& errors, TrackingProfile& p
   mode_section(root, p, TrackingMode::kBernoulli,
                [&](YamlSection s) { read_bernoulli(s, root, p); });
   mode_section(root, p, TrackingMode::kGroup, [&](YamlSection s) { read_group(s, p); });
+  mode_section(root, p, TrackingMode::kExtended, [&](YamlSection s) { read_extended(s, p); });
 }
 
 }  // namespace skytrack::config::detail

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "skytrack/bernoulli/bernoulli_tracker.hpp"
+#include "skytrack/extended/extended_estimator_mode.hpp"
 #include "skytrack/group/group_estimator.hpp"
 #include "skytrack/tracking/point_tracker.hpp"
 
@@ -31,10 +32,12 @@ Expected<EstimatorStages> EstimatorStages::create(const config::TrackingProfile&
       estimator = std::make_unique<group::GroupEstimator>(std::move(*groups));
       break;
     }
-    case config::TrackingMode::kExtended:
-      return make_error("profile '" + profile.identity.name + "': mode '" +
-                        std::string(config::to_string(profile.mode)) +
-                        "' is not implemented yet (point, bernoulli and group are)");
+    case config::TrackingMode::kExtended: {
+      auto objects = extended::ExtendedMode::create(profile);
+      if (!objects) return unexpected(objects.error());
+      estimator = std::make_unique<extended::ExtendedMode>(std::move(*objects));
+      break;
+    }
   }
   return EstimatorStages(Preprocessing(profile, dims), std::move(estimator));
 }

@@ -23,7 +23,7 @@ bool carries_height(const PlotScan& batch) {
 
 /// The modes whose estimators track in the plane.
 bool two_dimensional(config::TrackingMode mode) {
-  return mode == config::TrackingMode::kBernoulli || mode == config::TrackingMode::kGroup;
+  return mode != config::TrackingMode::kPoint;
 }
 
 }  // namespace

@@ -172,6 +172,28 @@ group: {motion: constant_velocity, labels: single, max_missed: 0, clutter_rate: 
   EXPECT_THAT(unknown.error().message, HasSubstr("group.lables"));
 }
 
+TEST(ProfileLoader, ExtendedModeReadsItsEstimatorAndNestedSections) {
+  const auto profile = parse_profile(R"(profile: {name: e, version: 1}
+mode: extended
+extended:
+  estimator: random_matrix
+  motion: {time_constant: 20.0}
+  random_matrix: {initial_dof: 6.0}
+  delete_misses: 5
+)",
+                                     "e.yaml");
+  ASSERT_TRUE(profile) << profile.error().message;
+  EXPECT_EQ(profile->extended.kind, extended::EstimatorKind::kRandomMatrix);
+  EXPECT_DOUBLE_EQ(profile->extended.motion.time_constant, 20.0);
+  EXPECT_DOUBLE_EQ(profile->extended.random_matrix.initial_dof, 6.0);
+  EXPECT_EQ(profile->extended.delete_misses, 5);
+  const auto typo = parse_profile(
+      "profile: {name: e, version: 1}\nmode: extended\nextended: {smf: {scatering: 1}}\n",
+      "e.yaml");
+  ASSERT_FALSE(typo);
+  EXPECT_THAT(typo.error().message, HasSubstr("extended.smf.scatering"));
+}
+
 TEST(ProfileLoader, ShippedDefaultProfileEqualsTheCompiledDefaults) {
   // The file documents the defaults; it must not drift from the struct initialisers.
   auto profile = load_profile(kDefaultProfile);

@@ -180,7 +180,8 @@ TEST_F(EndToEnd, ReplayAtMaxRateRecordsTheOfflineTracks) {
 TEST_F(EndToEnd, EveryImplementedModeRecordsItsOfflineTracksOverDds) {
   // GIVEN each mode's shipped profile on a scenario of its kind, tracked offline
   const std::pair<const char*, const char*> modes[] = {{"paper001_mmbpf", "bernoulli"},
-                                                       {"paper000_exp1_groups", "group"}};
+                                                       {"paper000_exp1_groups", "group"},
+                                                       {"paper002_extended", "extended"}};
   for (const auto& [scenario, mode] : modes) {
     SCOPED_TRACE(mode);
     const std::string profile = kSource + "/config/profiles/" + mode + ".yaml";

@@ -66,7 +66,18 @@ struct Group {
     return p;
   }
 };
-using kModes = ::testing::Types<PointBranching, PointPlainJpda, PointGnn, Bernoulli, Group>;
+/// Extended objects: the stream's targets are one plot each, so one plot makes a partition.
+struct Extended {
+  static config::TrackingProfile profile() {
+    config::TrackingProfile p = testing::test_profile();
+    p.mode = config::TrackingMode::kExtended;
+    p.dimension = 2;
+    p.extended.min_partition_plots = 1;
+    return p;
+  }
+};
+using kModes =
+    ::testing::Types<PointBranching, PointPlainJpda, PointGnn, Bernoulli, Group, Extended>;
 
 using testing::cartesian;
 

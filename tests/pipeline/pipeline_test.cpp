@@ -153,13 +153,5 @@ TEST(Pipeline, AnEmptyFirstBatchLeavesTheDimensionToTheFirstPlots) {
   EXPECT_EQ(dims, 3);
 }
 
-TEST(Pipeline, ModesNotImplementedYetAreRefusedAtStart) {
-  config::TrackingProfile profile = testing::test_profile();
-  profile.mode = config::TrackingMode::kExtended;
-  const auto pipeline = Pipeline::create(profile);
-  ASSERT_FALSE(pipeline);
-  EXPECT_NE(pipeline.error().message.find("not implemented"), std::string::npos);
-}
-
 }  // namespace
 }  // namespace skytrack

@@ -41,6 +41,7 @@ const Case kCases[] = {
     {"paper003_exp1_racetrack_figure_eight", "dense_clutter"},
     {"paper001_mmbpf", "bernoulli"},    // mode: bernoulli
     {"paper000_exp1_groups", "group"},  // mode: group
+    {"paper002_extended", "extended"},  // mode: extended
 };
 
 std::string source(const std::string& relative) {

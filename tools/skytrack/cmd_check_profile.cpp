@@ -19,8 +19,15 @@ std::string summary(const std::string& path, const config::TrackingProfile& prof
   }
   const std::string dims =
       profile.dimension == 0 ? std::string("auto 2-D/3-D") : fmt::format("{}-D", profile.dimension);
-  return fmt::format("{}: ok: {} version {}, mode {}, {}, models {}", path, profile.identity.name,
-                     profile.identity.version, config::to_string(profile.mode), dims, models);
+  // What the mode's estimator runs on: the IMM's models, or its own.
+  std::string estimator = "models " + models;
+  if (profile.mode == config::TrackingMode::kGroup) {
+    estimator = fmt::format("group boxes ({})", group::to_string(profile.group.motion));
+  } else if (profile.mode == config::TrackingMode::kExtended) {
+    estimator = fmt::format("extent estimator {}", extended::to_string(profile.extended.kind));
+  }
+  return fmt::format("{}: ok: {} version {}, mode {}, {}, {}", path, profile.identity.name,
+                     profile.identity.version, config::to_string(profile.mode), dims, estimator);
 }
 
 }  // namespace

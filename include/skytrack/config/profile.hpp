@@ -10,6 +10,7 @@
 
 #include "skytrack/bernoulli/bernoulli_spec.hpp"
 #include "skytrack/clutter/clutter_rejection_spec.hpp"
+#include "skytrack/extended/extended_spec.hpp"
 #include "skytrack/group/group_spec.hpp"
 
 namespace skytrack::config {
@@ -294,6 +295,7 @@ struct TrackingProfile {
   // mode: group. Its preprocessing is the common clutter_rejection section (the loader
   // copies it in).
   group::GroupSpec group;
+  extended::ExtendedSpec extended;  // mode: extended
   bool operator==(const TrackingProfile&) const = default;
 };
 

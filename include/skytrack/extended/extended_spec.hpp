@@ -3,6 +3,7 @@
 // tracker's partitioning, gating, initiation and deletion. Defaults are those of paper 002's
 // experiment (Liu et al. 2023, section 3.1) where it prints them; units in brackets.
 #include <cstdint>
+#include <string_view>
 
 namespace skytrack::extended {
 
@@ -13,6 +14,18 @@ enum class EstimatorKind : std::uint8_t {
   kMemEkf,        // Yang & Baum 2019, IEEE Trans. SP 67(18), MEM-EKF*
 };
 
+constexpr std::string_view to_string(EstimatorKind kind) {
+  switch (kind) {
+    case EstimatorKind::kSmf:
+      return "smf";
+    case EstimatorKind::kRandomMatrix:
+      return "random_matrix";
+    case EstimatorKind::kMemEkf:
+      return "mem_ekf";
+  }
+  return "";
+}
+
 /// Kinematics of every estimator: state [x, vx, y, vy, ax, ay] (StateLayout{2, acceleration})
 /// with paper 002's Singer-like transition (eq. 49) per axis
 ///   F = [1 T T^2/2; 0 1 T; 0 0 e^{-T/theta}],
@@ -22,6 +35,7 @@ enum class EstimatorKind : std::uint8_t {
 struct MotionSpec {
   double time_constant = 40.0;  // [s] theta
   double accel_noise = 0.5;     // [m/s^2] q
+  bool operator==(const MotionSpec&) const = default;
 };
 
 struct SmfSpec {
@@ -37,6 +51,7 @@ struct SmfSpec {
   /// instead of our reading (smf_eot.hpp); for the comparison in docs/extended.md only.
   bool literal_extent = false;
   double min_axis = 1.0;  // [m] floor of an estimated semi-axis (empty Minkowski difference)
+  bool operator==(const SmfSpec&) const = default;
 };
 
 struct RandomMatrixSpec {
@@ -44,6 +59,7 @@ struct RandomMatrixSpec {
   /// [s] tau of the extent's certainty decay, alpha = 2 + e^{-T/tau} (alpha - 2).
   double extent_time_constant = 200.0;
   double initial_dof = 10.0;  // alpha_0
+  bool operator==(const RandomMatrixSpec&) const = default;
 };
 
 struct MemEkfSpec {
@@ -52,6 +68,7 @@ struct MemEkfSpec {
   double axis_noise = 1.0;               // [m^2 per scan] process noise of each semi-axis
   double initial_orientation_var = 0.5;  // [rad^2]
   double initial_axis_var = 2500.0;      // [m^2]
+  bool operator==(const MemEkfSpec&) const = default;
 };
 
 /// The whole of extended mode's profile section.
@@ -79,6 +96,7 @@ struct ExtendedSpec {
   double initial_speed_sigma = 20.0;  // [m/s] a new track's velocity prior (starts at 0)
   double initial_accel_sigma = 0.5;   // [m/s^2] the process noise: more is fitted to noise
   double initial_extent_axis = 50.0;  // [m] floor of a new track's semi-axes
+  bool operator==(const ExtendedSpec&) const = default;
 };
 
 }  // namespace skytrack::extended
