@@ -114,6 +114,12 @@ void expect_same_tracks(const std::vector<TrackFrame>& live,
       EXPECT_EQ(a.tracks[t].status, b.tracks[t].status) << "scan " << a.scan;
       EXPECT_LE((a.tracks[t].position - b.tracks[t].position).cwiseAbs().maxCoeff(), 1e-9);
       EXPECT_LE((a.tracks[t].velocity - b.tracks[t].velocity).cwiseAbs().maxCoeff(), 1e-9);
+      EXPECT_EQ(a.tracks[t].kind, b.tracks[t].kind) << "scan " << a.scan;
+      EXPECT_EQ(a.tracks[t].members, b.tracks[t].members) << "scan " << a.scan;
+      ASSERT_EQ(a.tracks[t].extent.has_value(), b.tracks[t].extent.has_value());
+      if (a.tracks[t].extent) {
+        EXPECT_LE((*a.tracks[t].extent - *b.tracks[t].extent).cwiseAbs().maxCoeff(), 1e-9);
+      }
       ++tracks;
     }
     EXPECT_EQ(a.associations.size(), b.associations.size()) << "scan " << a.scan;
