@@ -77,7 +77,8 @@ Expected<PointTracker> PointTracker::create(const config::TrackingProfile& profi
   // A held last motion's models: the IMM's, with at most last_motion_accel_sigma of noise.
   std::optional<ImmFilter> hold;
   if (const double sigma = profile.point.branching.last_motion_accel_sigma;
-      profile.point.branching.enabled && profile.point.branching.coast_on_last_motion && sigma > 0.0) {
+      profile.point.branching.enabled && profile.point.branching.coast_on_last_motion &&
+      sigma > 0.0) {
     config::TrackingProfile held = profile;
     for (config::MotionModelSpec& m : held.motion_models) {
       m.accel_sigma = std::min(m.accel_sigma, sigma);
@@ -109,7 +110,8 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, StateLayout l
     gate_threshold_[d] = chi_square_quantile(profile.association.gate_probability, d);
     const double half = 0.5 * d;
     gate_volume_per_peak_[d] = std::pow(0.5 * gate_threshold_[d], half) / std::tgamma(half + 1.0);
-    manoeuvre_threshold_[d] = chi_square_quantile(profile.point.branching.manoeuvre_gate_probability, d);
+    manoeuvre_threshold_[d] =
+        chi_square_quantile(profile.point.branching.manoeuvre_gate_probability, d);
   }
   // What a track may do between looks, for its search region (search_regions): three sigma
   // of its models' white acceleration, or its fastest turn.

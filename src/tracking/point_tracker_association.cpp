@@ -171,8 +171,9 @@ void PointTracker::update_track(int t, std::span<const int> candidates,
     detected = valid_association(beta_plots, beta_miss);
     if (!detected) hold_last_motion(track);
   }
-  const LifeChange change = advance_life(
-      track.life, detected, mode_spread(track.estimate, kLifeSpreadDims), profile_.point.track_life);
+  const LifeChange change =
+      advance_life(track.life, detected, mode_spread(track.estimate, kLifeSpreadDims),
+                   profile_.point.track_life);
   if (change.confirmed) {
     add_event(events_, TrackEventType::kConfirmed, track.id, "");
     if (branching()) confirmed_now_.push_back(t);

@@ -39,8 +39,9 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
   if (branch.branch == BranchType::kFather) {  // made independent earlier in this batch
     update_existence(branch.life, likelihood_ratio, profile_.association.detection_probability,
                      profile_.association.gate_probability, profile_.point.track_life);
-    const LifeChange change = advance_life(
-        branch.life, true, mode_spread(branch.estimate, kLifeSpreadDims), profile_.point.track_life);
+    const LifeChange change =
+        advance_life(branch.life, true, mode_spread(branch.estimate, kLifeSpreadDims),
+                     profile_.point.track_life);
     if (change.confirmed) add_event(events_, TrackEventType::kConfirmed, number, "");
     return;
   }
@@ -58,7 +59,7 @@ void PointTracker::update_branch(const BranchPair& pair, ScanReport& report, Tra
                      profile_.association.gate_probability, profile_.point.track_life);
   }
   const bool confirmed = advance_life(branch.life, true, 0.0, life_of(branch)).confirmed;
-  if (branch.coast_son) {
+  if (branch.coast_son()) {
     // Two hypotheses of one target since the split, the father's plots or misses and now
     // this plot: the better supported one stands, as in track-oriented MHT. Inherited in
     // this look's promotion, it waits for the next look: one decision per look.
@@ -121,8 +122,9 @@ void PointTracker::create_branch(const BranchPair& pair, ScanReport& report, Tra
   // Its existence starts at its pair's association probability (the chance that the plot
   // is its parent's target; at least a new track's): its later plots decide.
   if (weighs_existence(branch)) {
-    branch.life.existence = std::clamp(pair.probability, profile_.point.track_life.initial_existence,
-                                       profile_.point.track_life.confirm_existence);
+    branch.life.existence =
+        std::clamp(pair.probability, profile_.point.track_life.initial_existence,
+                   profile_.point.track_life.confirm_existence);
   }
   branch.estimate =
       of_father ? son_start(pair.track, plot) : start_estimate(initiation, branch.life);
@@ -212,7 +214,7 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
     }
     const bool touched = touched_[i] != 0;
     const double miss = miss_score(static_cast<int>(i));
-    if (branch.coast_son) {
+    if (branch.coast_son()) {
       std::string reason;
       if (!touched) {
         branch.score += miss;
@@ -252,7 +254,7 @@ void PointTracker::age_branches(ScanReport& report, TrackFrame& frame) {
 void PointTracker::retire_doomed_fathers() {
   // A doomed father that may start no more sons goes with its last branch.
   for (PointTrack& father : tracks_) {
-    if (father.branch != BranchType::kFather || father.replaced || !father.doomed ||
+    if (father.branch != BranchType::kFather || father.replaced || !father.doomed() ||
         father.life.status == TrackStatus::kDeleted || tree_.branch_count(father.id) > 0 ||
         may_start_sons(father) || father.life.consecutive_misses < recovery_misses()) {
       continue;
@@ -274,7 +276,7 @@ bool PointTracker::room_for_chain(std::int64_t father, double existence, std::in
   int least = -1;
   for (const std::int64_t son : node->children) {
     const int i = slot(son);
-    if (i < 0 || !tracks_[i].from_chain || is_reported_as_firm(tracks_[i].life.status)) continue;
+    if (i < 0 || !tracks_[i].from_chain() || is_reported_as_firm(tracks_[i].life.status)) continue;
     if (least < 0 || tracks_[i].life.existence < tracks_[least].life.existence) least = i;
   }
   if (least < 0 || tracks_[least].life.existence >= existence) return false;

@@ -101,13 +101,12 @@ void PointTracker::split_undecided_fathers() {
       if (free(k) && p.beta[k] >= tau) ++likely;
     }
     PointTrack& track = tracks_[p.track];
-    if (likely < 2 || track.doomed || track.life.status == TrackStatus::kDeleted) continue;
+    if (likely < 2 || track.doomed() || track.life.status == TrackStatus::kDeleted) continue;
     // Undecided: no non-manoeuvre pair; the plots its IMM-JPDA found likely start its sons.
     std::erase_if(branch_pairs_, [&](const BranchPair& b) {
       return b.kind == PairKind::kFatherNonManoeuvre && b.track == p.track;
     });
-    track.doomed = batches_;
-    track.undecided = true;
+    track.state = FatherState::kUndecided;
     if (holds_last_motion()) {  // its sons hold the plots; it coasts on its last motion
       track.last_detected = p.last_detected;
       hold_last_motion(track);
@@ -132,8 +131,8 @@ void PointTracker::update_father(int t, std::span<const int> candidates,
   if (!firm || father.life.status != TrackStatus::kDeleted) return;
   // Deleted by its life: it lives on, coasting, while branches may replace it.
   father.life.status = TrackStatus::kCoasting;
-  if (!father.doomed) {
-    father.doomed = batches_;
+  if (!father.doomed()) {
+    father.state = FatherState::kSuspended;
     add_event(events_, TrackEventType::kSuspended, father.id,
               "deleted by its track life; kept unreported while a branch may replace it");
   }
@@ -196,7 +195,7 @@ void PointTracker::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
 void PointTracker::note_doubtful_update(const BranchPair& pair) {
   if (profile_.point.branching.coast_sons == 0 || pair.candidate < 0) return;
   const PointTrack& father = tracks_[pair.track];
-  if (father.doomed || !is_reported_as_firm(father.life.status)) return;
+  if (father.doomed() || !is_reported_as_firm(father.life.status)) return;
   // The plot's density as clutter against its density as the father's target (detected):
   // about 0.2 for a target's plot inside paper003_exp2's clutter area, 1e-4 outside it.
   const double clutter = pre_->density(pre_->plots()[pair.plot], pair.plot);
@@ -212,7 +211,7 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
   for (const DoubtfulUpdate& d : doubtful_) {
     const PointTrack& father = tracks_[d.track];
     const BeforeUpdate& before = before_update_[static_cast<std::size_t>(d.track)];
-    if (father.branch != BranchType::kFather || father.replaced || father.doomed ||
+    if (father.branch != BranchType::kFather || father.replaced || father.doomed() ||
         father.life.status == TrackStatus::kDeleted || !before.motion) {
       continue;
     }
@@ -236,7 +235,7 @@ void PointTracker::start_coast_sons(ScanReport& report, TrackFrame& frame) {
     PointTrack son;
     son.id = next_provisional_++;
     son.branch = BranchType::kSon;
-    son.coast_son = true;
+    son.origin = BranchOrigin::kCoast;
     son.life.scans = 1;
     son.life.consecutive_misses = 1;  // this look: the target missed, the plot a false alarm
     son.life.existence = std::clamp(d.doubt, profile_.point.track_life.initial_existence,
@@ -284,7 +283,7 @@ bool PointTracker::age_coast_son(int t, double time) {
 
 bool PointTracker::of_undecided_father(std::int64_t son) const {
   const int f = slot(tree_.father_of(son));
-  return f >= 0 && tracks_[f].undecided;
+  return f >= 0 && tracks_[f].undecided();
 }
 
 double PointTracker::family_support(std::int64_t father) const {

@@ -33,11 +33,11 @@ namespace skytrack {
 using namespace tracking_detail;
 
 const config::TrackLifeSpec& PointTracker::life_of(const PointTrack& branch) const {
-  return branch.from_chain ? profile_.point.track_life : branch_life_;
+  return branch.from_chain() ? profile_.point.track_life : branch_life_;
 }
 
 bool PointTracker::weighs_existence(const PointTrack& branch) const {
-  return branch.from_chain || branch.coast_son ||
+  return branch.from_chain() || branch.coast_son() ||
          branch_life_.confirmation == config::ConfirmationMethod::kExistence;
 }
 
@@ -49,13 +49,13 @@ int PointTracker::recovery_misses() const {
 
 bool PointTracker::may_start_sons(const PointTrack& father) const {
   return is_reported_as_firm(father.life.status) &&
-         (!father.doomed ||
+         (!father.doomed() ||
           father.life.consecutive_misses < profile_.point.track_life.delete_confirmed_misses);
 }
 
 bool PointTracker::suspends_before_gating(const PointTrack& track, const Gaussian& mid,
                                           double time) const {
-  if (!branching() || track.branch != BranchType::kFather || track.doomed ||
+  if (!branching() || track.branch != BranchType::kFather || track.doomed() ||
       !is_reported_as_firm(track.life.status) || tree_.branch_count(track.id) == 0) {
     return false;
   }
@@ -90,7 +90,8 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
   pending_splits_.clear();
   doubtful_.clear();
   replaced_now_.clear();
-  if (profile_.point.branching.coast_sons > 0) before_update_.assign(tracks_.size(), BeforeUpdate{});
+  if (profile_.point.branching.coast_sons > 0)
+    before_update_.assign(tracks_.size(), BeforeUpdate{});
   solve_kind(PairKind::kFatherNonManoeuvre, report, frame);
   split_undecided_fathers();
   solve_kind(PairKind::kSonNonManoeuvre, report, frame);
@@ -109,7 +110,7 @@ void PointTracker::associate_branches(const PlotScan& scan, ScanReport& report, 
       continue;
     }
     if (track.branch == BranchType::kFather && !may_start_sons(track)) continue;
-    if (track.coast_son) continue;  // the father's last motion only: it does not branch
+    if (track.coast_son()) continue;  // the father's last motion only: it does not branch
     gate_manoeuvre(scan, static_cast<int>(t), track.branch == BranchType::kGrandson);
   }
   // §2.1 (2), (3): the manoeuvre kinds.
@@ -136,7 +137,7 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
       pool, kind_list_, gate_probability, report,
       [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
         if (tracks_[t].branch != type) return;
-        const bool was_doomed = tracks_[t].doomed.has_value();
+        const bool was_doomed = tracks_[t].doomed();
         // Two plots each likely enough: one frame cannot decide (§0), the sons will.
         const bool split = kind == PairKind::kFatherNonManoeuvre && !was_doomed &&
                            may_start_sons(tracks_[t]) &&
@@ -153,7 +154,7 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
         const PointTrack& track = tracks_[t];
         if (track.life.status == TrackStatus::kDeleted) return;
         // Only an ambiguity test needs to know whose likeliest plot each plot is.
-        if (kind == PairKind::kFatherNonManoeuvre && !track.doomed &&
+        if (kind == PairKind::kFatherNonManoeuvre && !track.doomed() &&
             profile_.point.branching.ambiguity_beta < 1.0) {
           claim_best_plot(t, pool, mine, beta, miss);
           // Decided once every father's likeliest plot is known (split_undecided_fathers).
@@ -168,7 +169,7 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
             }
           }
         }
-        if (kind == PairKind::kFatherNonManoeuvre && !was_doomed && track.doomed &&
+        if (kind == PairKind::kFatherNonManoeuvre && !was_doomed && track.doomed() &&
             may_start_sons(track)) {
           // Suspended (or undecided) by this very update: the plots its IMM-JPDA found
           // likely (its turn modes included) start its sons, as its manoeuvre pairs do.
@@ -179,7 +180,7 @@ void PointTracker::solve_kind(PairKind kind, ScanReport& report, TrackFrame& fra
           }
           return;
         }
-        if (track.doomed && (!manoeuvre || !may_start_sons(track))) return;
+        if (track.doomed() && (!manoeuvre || !may_start_sons(track))) return;
         if (kind != PairKind::kFatherNonManoeuvre && updates_track(kind)) {
           SoftUpdate& u = branch_updates_[static_cast<std::size_t>(t)];
           u.candidates.assign(mine.begin(), mine.end());

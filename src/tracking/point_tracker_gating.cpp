@@ -56,9 +56,8 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
     PointTrack& track = tracks_[t];
     // Undecided until its sons are gone; for one look only when it holds its last motion,
     // which stays its hypothesis beside its sons' (rule 5 then decides between them).
-    if (track.undecided && (tree_.branch_count(track.id) == 0 || holds_last_motion())) {
-      track.doomed.reset();
-      track.undecided = false;
+    if (track.undecided() && (tree_.branch_count(track.id) == 0 || holds_last_motion())) {
+      track.state = FatherState::kActive;
     }
     const ImmEstimate& estimate = track.estimate;
     if (scan.coverage) {
@@ -84,12 +83,12 @@ void PointTracker::gate(const PlotScan& scan, double batch_mid, double half_span
             : 0;
     if (covered_[t] != 0 &&
         suspends_before_gating(tracks_[t], mid, std::max(batch_mid, estimate.time))) {
-      tracks_[t].doomed = batches_;
+      tracks_[t].state = FatherState::kSuspended;
       suspended_at_gate_.push_back(static_cast<int>(t));
     }
     // Grandsons and doomed fathers take manoeuvre pairs only; manoeuvre gates are made
     // later, for the tracks that can use them (point_tracker_branch_pairs.cpp).
-    const bool non_manoeuvre = tracks_[t].branch != BranchType::kGrandson && !tracks_[t].doomed;
+    const bool non_manoeuvre = tracks_[t].branch != BranchType::kGrandson && !tracks_[t].doomed();
     // Search radius: the widest gate in the most uncertain direction, plus the motion over
     // half the batch's time span. The exact gate test is per plot, in measurement space.
     const double radius = search_radius(mid, centre, widest, scan);
@@ -173,8 +172,8 @@ std::optional<ImmEstimate> PointTracker::last_motion(const PointTrack& track, do
   // A coast son always holds its father's last motion (branching.coast_sons).
   const bool firm_father =
       track.branch == BranchType::kFather && is_reported_as_firm(track.life.status);
-  if (!holds_last_motion() || !track.last_detected || !(firm_father || track.coast_son) ||
-      (!track.coast_son && track.life.consecutive_misses < 1 && !missing_now &&
+  if (!holds_last_motion() || !track.last_detected || !(firm_father || track.coast_son()) ||
+      (!track.coast_son() && track.life.consecutive_misses < 1 && !missing_now &&
        profile_.point.branching.non_manoeuvre_gate != config::NonManoeuvreGate::kLastMotion)) {
     return std::nullopt;
   }

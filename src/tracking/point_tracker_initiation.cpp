@@ -190,8 +190,8 @@ void PointTracker::initiate(const PlotScan& scan, ScanReport& report, TrackFrame
   if (refused > 0) {
     report.initiations_refused += refused;
     add_event(events_, TrackEventType::kOverload, 0,
-              std::to_string(refused) +
-                  " chains start no track: " + std::to_string(profile_.point.initiation.max_tentative) +
+              std::to_string(refused) + " chains start no track: " +
+                  std::to_string(profile_.point.initiation.max_tentative) +
                   " tentative tracks held (initiation.max_tentative)");
   }
 }

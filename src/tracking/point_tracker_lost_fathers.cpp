@@ -17,7 +17,7 @@ void PointTracker::find_lost_fathers(const PlotScan& scan) {
   for (std::size_t f = 0; f < tracks_.size() && f < has_previous_.size(); ++f) {
     const PointTrack& father = tracks_[f];
     if (has_previous_[f] == 0) continue;
-    if (father.branch != BranchType::kFather || !father.doomed || father.undecided ||
+    if (father.branch != BranchType::kFather || !father.doomed() || father.undecided() ||
         father.replaced || father.life.status == TrackStatus::kDeleted) {
       continue;
     }
@@ -65,7 +65,7 @@ void PointTracker::continue_lost_fathers(ScanReport& report) {
   for (const int t : confirmed_now_) {
     const PointTrack& track = tracks_[t];
     if (track.branch != BranchType::kFather || track.life.status != TrackStatus::kConfirmed ||
-        track.doomed || !track.last_plot || track.last_plot_batch != batches_) {
+        track.doomed() || !track.last_plot || track.last_plot_batch != batches_) {
       continue;
     }
     double nis = 0.0;
@@ -130,7 +130,7 @@ bool PointTracker::start_chain_branch(int father, const Initiation& initiation, 
   }
   branch.id = next_provisional_++;
   branch.branch = BranchType::kSon;
-  branch.from_chain = true;
+  branch.origin = BranchOrigin::kPlotChain;
   branch.quality = tracks_[father].quality;
   branch.first_plot = initiation.plots.front();
   branch.last_plot = plot;
@@ -188,7 +188,7 @@ void PointTracker::apply(std::span<const BranchChange> changes, const std::strin
           track.quality = old.quality;
         }
         track.branch = BranchType::kFather;
-        track.coast_son = false;
+        if (track.coast_son()) track.origin = BranchOrigin::kManoeuvrePair;
         track.id = change.father;
         replaced_now_.push_back(change.father);
         slots_.erase(change.track);

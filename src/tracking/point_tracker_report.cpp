@@ -30,7 +30,8 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
     if (track.replaced) continue;  // its number lives on in the branch that replaced it
     // A doomed father is not reported while it waits for a branch to replace it (an
     // undecided one is).
-    if (track.doomed && !track.undecided && track.life.status != TrackStatus::kDeleted) continue;
+    if (track.doomed() && !track.undecided() && track.life.status != TrackStatus::kDeleted)
+      continue;
     const ImmEstimate at_time =
         track.estimate.time < time ? filter_.predict(track.estimate, time) : track.estimate;
     const Gaussian g = filter_.combine(at_time);

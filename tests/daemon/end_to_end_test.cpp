@@ -50,12 +50,15 @@ class EndToEnd : public ::testing::Test {
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   /// A daemon configuration on this test's domain; `extra` goes into the skytrackd section.
+  /// `qos_extra`: more of dds.qos, e.g. ", tracks: {history_depth: 1000}".
   std::string write_config(const std::string& profile, const std::string& extra = "",
-                           const std::string& queue = "{capacity: 256}") const {
+                           const std::string& queue = "{capacity: 256}",
+                           const std::string& qos_extra = "") const {
     const std::string file = path("skytrackd.yaml");
     std::ofstream(file) << "skytrackd: {instance: e2e, profile: " << profile
                         << ", status_period: 0.2" << extra << "}\n"
-                        << "dds: {domain: " << domain_ << ", qos: {status: {deadline: 1.0}}}\n"
+                        << "dds: {domain: " << domain_ << ", qos: {status: {deadline: 1.0}"
+                        << qos_extra << "}}\n"
                         << "queue: " << queue << "\n";
     return file;
   }
@@ -192,7 +195,10 @@ TEST_F(EndToEnd, EveryImplementedModeRecordsItsOfflineTracksOverDds) {
     SCOPED_TRACE(mode);
     const std::string profile = kSource + "/config/profiles/" + mode + ".yaml";
     simulate_and_track_offline(scenario, profile);
-    const std::string config = write_config(profile);
+    // Every frame kept for a late reader: the recorder's match may reach the daemon's writer
+    // after the first frame under load, and a reader matched late gets the writer's history.
+    const std::string config =
+        write_config(profile, "", "{capacity: 256}", ", tracks: {history_depth: 1000}");
     Child daemon({kDaemon, "--config", config}, path("daemon.log"));
     ASSERT_TRUE(daemon.wait_for_log("running", 10s)) << daemon.log();
     Child record({kTool, "record", "--config", config, "--tracks", path("live.tracks.jsonl"),
@@ -205,6 +211,7 @@ TEST_F(EndToEnd, EveryImplementedModeRecordsItsOfflineTracksOverDds) {
     daemon.signal(SIGTERM);
     ASSERT_EQ(daemon.wait(5s), 0) << daemon.log();
     // THEN they are the offline ones, and the mode's target was confirmed
+    EXPECT_THAT(read_file(path("replay.log")), HasSubstr("0 scans unanswered"));
     expect_same_tracks(read_tracks(path("live.tracks.jsonl")),
                        read_tracks(path("offline.tracks.jsonl")));
     EXPECT_THAT(read_file(path("live.tracks.jsonl")), HasSubstr("\"confirmed\""));

@@ -154,7 +154,7 @@ AntennaErrors track_antenna(const sim::Scenario& scenario, int seeds, bool use_p
         score(errors.reported, truths, g, frame.time);
       }
       for (const PointTrack& track : tracker->tracks()) {
-        if (track.branch != BranchType::kFather || track.replaced || track.doomed ||
+        if (track.branch != BranchType::kFather || track.replaced || track.doomed() ||
             !is_reported_as_firm(track.life.status) || track.life.consecutive_misses > 0) {
           continue;
         }

@@ -52,6 +52,33 @@
 
 namespace skytrack {
 
+/// A father's state in the branch layer (paper 003); every father of a plain tracker (branching
+/// off) stays active.
+enum class FatherState : std::uint8_t {
+  kActive,  // reported; takes every kind of pair
+  // Its update weighed two plots above branching.ambiguity_beta: still reported while the sons
+  // from its plots decide; active again once none is left.
+  kUndecided,
+  // Its track life deleted it (its gate too wide, or too many misses) while a branch may
+  // still replace it: not reported ("suspended" event), coasts and takes no non-manoeuvre
+  // pair; it starts sons from its manoeuvre gate until its misses reach
+  // delete_confirmed_misses, and is deleted (and reported so) once it has no branches left
+  // after that. A branch that replaces it brings its number back.
+  kSuspended,
+};
+
+/// What started a son or grandson.
+enum class BranchOrigin : std::uint8_t {
+  kManoeuvrePair,  // a pair in its parent's manoeuvre gate (paper 003 §2.3)
+  // A plot chain completed in a suspended father's manoeuvre gate (§3.3): confirmed on its
+  // existence, as the same chain would be as a new track, not on plot counts.
+  kPlotChain,
+  // A coast son (branching.coast_sons): its father's last motion before a plot that may have
+  // been a false alarm; it holds and gates on that motion (last_detected) until it takes
+  // plots of its own, and is a plain father once it replaces its father.
+  kCoast,
+};
+
 struct PointTrack {
   std::int64_t id = 0;
   TrackLife life;
@@ -85,18 +112,8 @@ struct PointTrack {
   std::uint64_t last_plot_batch = 0;
   double score = 0.0;     // a branch's summed log pair probabilities: the least likely is pruned
   bool replaced = false;  // a father a branch replaced: dropped without a report
-  // A firm father its track life deleted (its gate too wide, or too many misses) while a
-  // branch may still replace it: it is not reported ("suspended" event), coasts and takes no
-  // non-manoeuvre pair; it starts sons from its manoeuvre gate until its misses reach
-  // delete_confirmed_misses, and is deleted (and reported so) once it has no branches left
-  // after that. A branch that replaces it brings its number back. The batch it happened in.
-  std::optional<std::uint64_t> doomed;
-  // Doomed by an ambiguous association (branching.ambiguity_beta): still reported while the
-  // sons from its plots decide; back to a plain father if none is left.
-  bool undecided = false;
-  // A son started from a plot chain (§3.3): confirmed on its existence, as the same chain
-  // would be as a new track, not on plot counts.
-  bool from_chain = false;
+  FatherState state = FatherState::kActive;
+  BranchOrigin origin = BranchOrigin::kManoeuvrePair;
   // Its estimate after its latest update with a valid association (a plot likelier than its
   // miss), kept with branching.coast_on_last_motion: a firm father that missed since coasts
   // and gates on that motion.
@@ -104,10 +121,12 @@ struct PointTrack {
   // While it holds its last motion: what its IMM would have coasted to since (the turns it
   // may have started), from which its manoeuvre gate and sons start.
   std::optional<ImmEstimate> coasted;
-  // A coast son (branching.coast_sons): its father's last motion before a plot that may have
-  // been a false alarm; it holds and gates on that motion (last_detected) until it takes
-  // plots of its own.
-  bool coast_son = false;
+
+  /// Suspended or undecided: waiting for its branches to decide.
+  bool doomed() const { return state != FatherState::kActive; }
+  bool undecided() const { return state == FatherState::kUndecided; }
+  bool from_chain() const { return origin == BranchOrigin::kPlotChain; }
+  bool coast_son() const { return origin == BranchOrigin::kCoast; }
 };
 
 class PointTracker final : public Estimator {
