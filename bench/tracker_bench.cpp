@@ -96,7 +96,7 @@ void run_batches(benchmark::State& state, bool dense_clutter_rules, bool branchi
     associate_ms += r.associate.count() / 1000.0;
     manage_ms += r.manage.count() / 1000.0;
     confirmed = r.confirmed + r.coasting;
-    branches += r.branches;
+    branches += r.point.branches;
     ++next;
   }
   state.counters["plots"] =

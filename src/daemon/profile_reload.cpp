@@ -43,6 +43,9 @@ std::string restart_reason(const config::TrackingProfile& a, const config::Track
   differs(a.point.initiation == b.point.initiation, "point.initiation");
   differs(a.point.track_life == b.point.track_life, "point.track_life");
   differs(a.point.branching == b.point.branching, "point.branching");
+  differs(a.bernoulli == b.bernoulli, "bernoulli");
+  differs(a.group == b.group, "group");
+  differs(a.extended == b.extended, "extended");
   return out.empty() ? "tracking parameters" : out;
 }
 

@@ -103,6 +103,9 @@ TEST(ProfileReload, EverySectionRestartsTheTracksButIdentityAndInputLimits) {
       {"point.initiation", [](TrackingProfile& p) { p.point.initiation.max_speed = 400.0; }},
       {"point.track_life", [](TrackingProfile& p) { p.point.track_life.confirm_m = 2; }},
       {"point.branching", [](TrackingProfile& p) { p.point.branching.coast_sons = 2; }},
+      {"bernoulli", [](TrackingProfile& p) { p.bernoulli.birth_particles = 50; }},
+      {"group", [](TrackingProfile& p) { p.group.max_missed = 1; }},
+      {"extended", [](TrackingProfile& p) { p.extended.delete_misses = 9; }},
   };
   for (const auto& [name, change] : sections) {
     TrackingProfile after = before;
