@@ -52,7 +52,7 @@ class MmBernoulliFilter {
                             const ModelDynamics& dynamics) noexcept;
   double likelihood_integral(int j, std::size_t survivors, std::size_t count) noexcept;
   /// Eq. 26-28 and step 3(3): weights times l(x), model moments, resampling to N_j, output.
-  void update_and_resample(const std::array<std::size_t, kMaxModels>& count,
+  void update_and_resample(const std::array<std::size_t, kMaxModels>& count, double dt,
                            BernoulliEstimate& estimate) noexcept;
 
   BernoulliSpec spec_;
