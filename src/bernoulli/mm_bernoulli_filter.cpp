@@ -143,7 +143,7 @@ double MmBernoulliFilter::likelihood_integral(int j, std::size_t survivors,
 }
 
 void MmBernoulliFilter::update_and_resample(const std::array<std::size_t, kMaxModels>& count,
-                                            BernoulliEstimate& estimate) noexcept {
+                                            double dt, BernoulliEstimate& estimate) noexcept {
   const int m = spec_.model_count;
   const double pd = spec_.detection_probability;
   // Eq. 26-27 and step 3(3): weights times l(x), normalised, resampled to N_j.
@@ -170,6 +170,19 @@ void MmBernoulliFilter::update_and_resample(const std::array<std::size_t, kMaxMo
     const std::span<const double> w(weight_[j].data(), n);
     weighted_moments(cloud, w, means[j], covariances[j]);
     systematic_resample(cloud, w, rng_.uniform(), posterior_[j]);
+    const auto n_j = posterior_[j].size();
+    // Step 3(3) keeps N_j particles, but after a birth they descend from the few newborns
+    // near the target and the model's small process noise (5 m/s^2 for the CV) spreads their
+    // copies far less than the posterior's velocity spread: regularise with the kernel for
+    // the effective number of draws the weights hold, the model's own moments only (no
+    // particle interaction). Only a reported target: a cloud of clutter-born hypotheses is
+    // renewed by the births anyway.
+    if (q_ > spec_.existence_threshold) {
+      const double draws = std::min(effective_sample_size(w), static_cast<double>(n_j));
+      const double velocity_sigma = spec_.models[j].accel_sigma * dt;
+      regularise_velocity(posterior_[j], means[j], covariances[j], optimal_kernel_bandwidth(draws),
+                          velocity_sigma * velocity_sigma, rng_);
+    }
     estimate.mean += mu_[j] * means[j];
   }
   has_posterior_ = true;
@@ -221,7 +234,7 @@ void MmBernoulliFilter::recurse(double dt, BernoulliEstimate& estimate) noexcept
   q_ = update_existence(q_predicted, std::span(mu_full).first(m), std::span(omd).first(m));
   mu_ = mu_full;
   update_model_probabilities(std::span(mu_).first(m), std::span(omd).first(m));
-  update_and_resample(count, estimate);
+  update_and_resample(count, dt, estimate);
   estimate.existence = q_;
   estimate.target_reported = q_ > spec_.existence_threshold;
   for (int j = 0; j < m; ++j) estimate.model_probabilities[j] = mu_[j];

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/LU>
+
 namespace skytrack::bernoulli {
 namespace {
 
@@ -173,6 +175,55 @@ void weighted_moments(std::span<const Particle> particles, std::span<const doubl
     }
   }
   mean = m + Eigen::Vector4d(r.x, r.vx, r.y, r.vy);
+}
+
+bool regularise_velocity(std::span<Particle> cloud, const Eigen::Vector4d& mean,
+                         const Eigen::Matrix4d& covariance, double bandwidth,
+                         double prediction_velocity_variance, NormalSampler& rng) noexcept {
+  if (!(bandwidth > 0.0) || !(bandwidth < 1.0)) return false;
+  // [x, vx, y, vy]: position rows 0, 2; velocity rows 1, 3.
+  Eigen::Matrix2d pp, vv, vp;
+  pp << covariance(0, 0), covariance(0, 2), covariance(2, 0), covariance(2, 2);
+  vv << covariance(1, 1), covariance(1, 3), covariance(3, 1), covariance(3, 3);
+  vp << covariance(1, 0), covariance(1, 2), covariance(3, 0), covariance(3, 2);
+  const double det = pp.determinant();
+  if (!(det > 0.0) || !(pp(0, 0) > 0.0)) return false;
+  Eigen::Matrix2d pp_inverse;
+  pp_inverse << pp(1, 1), -pp(0, 1), -pp(1, 0), pp(0, 0);
+  pp_inverse /= det;
+  const Eigen::Matrix2d gain = vp * pp_inverse;  // E[v|p] = m_v + gain (p - m_p)
+  Eigen::Matrix2d c = vv - gain * vp.transpose();
+  c(0, 1) = c(1, 0) = 0.5 * (c(0, 1) + c(1, 0));
+  const double half_trace = 0.5 * (c(0, 0) + c(1, 1)), half_gap = 0.5 * (c(0, 0) - c(1, 1));
+  const double largest = half_trace + std::sqrt(half_gap * half_gap + c(0, 1) * c(0, 1));
+  if (!(bandwidth * bandwidth * largest > prediction_velocity_variance)) return false;
+  if (!(c(0, 0) > 0.0)) return false;
+  const double l00 = std::sqrt(c(0, 0)), l10 = c(1, 0) / l00;
+  const double l11_squared = c(1, 1) - l10 * l10;
+  if (!(l11_squared > 0.0)) return false;
+  const double l11 = std::sqrt(l11_squared);
+  const double a = std::sqrt(1.0 - bandwidth * bandwidth);
+  for (Particle& p : cloud) {
+    const double dx = p.x - mean[0], dy = p.y - mean[2];
+    const double cx = mean[1] + gain(0, 0) * dx + gain(0, 1) * dy;  // E[v|p]
+    const double cy = mean[3] + gain(1, 0) * dx + gain(1, 1) * dy;
+    const double e0 = rng.normal(), e1 = rng.normal();
+    p.vx = cx + a * (p.vx - cx) + bandwidth * l00 * e0;
+    p.vy = cy + a * (p.vy - cy) + bandwidth * (l10 * e0 + l11 * e1);
+  }
+  return true;
+}
+
+double effective_sample_size(std::span<const double> weights) noexcept {
+  double sum_of_squares = 0.0;
+  for (const double w : weights) sum_of_squares += w * w;
+  return sum_of_squares > 0.0 ? 1.0 / sum_of_squares : 0.0;
+}
+
+double optimal_kernel_bandwidth(double samples) noexcept {
+  constexpr double kDim = 4.0;
+  if (!(samples > 0.0)) return 0.0;
+  return std::pow(4.0 / ((kDim + 2.0) * samples), 1.0 / (kDim + 4.0));
 }
 
 }  // namespace skytrack::bernoulli

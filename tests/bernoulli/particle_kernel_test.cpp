@@ -149,5 +149,67 @@ TEST(BernoulliParticleKernel, WeightedMomentsByHand) {
   EXPECT_NEAR(cov(1, 1), 0.0, 1e-12);
 }
 
+TEST(BernoulliParticleKernel, RegularisationSpreadsCopiesAndKeepsTheMoments) {
+  // GIVEN 2000 parents of a posterior with a position-velocity correlation, each copied 10
+  // times as resampling copies the few newborns near a target
+  NormalSampler rng(7);
+  std::vector<Particle> cloud;
+  for (int k = 0; k < 2000; ++k) {
+    const double px = 40.0 * rng.normal(), py = 5.0 * rng.normal();
+    const Particle parent{20000.0 + px, -8.0 + 0.8 * px + 30.0 * rng.normal(), 10000.0 + py,
+                          -400.0 + 2.0 * py + 10.0 * rng.normal()};
+    for (int c = 0; c < 10; ++c) cloud.push_back(parent);
+  }
+  const std::vector<double> weights(cloud.size(), 1.0 / static_cast<double>(cloud.size()));
+  Eigen::Vector4d mean, after_mean;
+  Eigen::Matrix4d cov, after_cov;
+  weighted_moments(cloud, weights, mean, cov);
+  const std::vector<Particle> before = cloud;
+  // WHEN the kernel for 2000 draws (h = 0.36, h^2 var(vx | x) = 117 (m/s)^2) is wider than a
+  // 5 m/s^2 prediction noise
+  const double h = optimal_kernel_bandwidth(2000.0);
+  EXPECT_NEAR(h, std::pow(4.0 / 12000.0, 0.125), 1e-12);
+  ASSERT_TRUE(regularise_velocity(cloud, mean, cov, h, 25.0, rng));
+  // THEN every copy has its own velocity, positions stay, mean and covariance are kept
+  int moved = 0;
+  for (std::size_t k = 0; k < cloud.size(); ++k) {
+    EXPECT_EQ(cloud[k].x, before[k].x);
+    EXPECT_EQ(cloud[k].y, before[k].y);
+    moved += cloud[k].vx != before[k].vx && cloud[k].vy != before[k].vy;
+  }
+  EXPECT_EQ(moved, static_cast<int>(cloud.size()));
+  weighted_moments(cloud, weights, after_mean, after_cov);
+  EXPECT_NEAR(after_mean[1], mean[1], 0.5);
+  EXPECT_NEAR(after_mean[3], mean[3], 0.2);
+  EXPECT_NEAR(after_cov(1, 1) / cov(1, 1), 1.0, 0.05);
+  EXPECT_NEAR(after_cov(3, 3) / cov(3, 3), 1.0, 0.05);
+  EXPECT_NEAR(after_cov(0, 1) / cov(0, 1), 1.0, 0.05);
+  EXPECT_NEAR(after_cov(2, 3) / cov(2, 3), 1.0, 0.05);
+}
+
+TEST(BernoulliParticleKernel, NoRegularisationWhenThePredictionNoiseIsWider) {
+  // GIVEN a cloud whose velocity given the position spreads 3 m/s per axis
+  NormalSampler rng(3);
+  std::vector<Particle> cloud;
+  for (int k = 0; k < 300; ++k) {
+    cloud.push_back(
+        {40.0 * rng.normal(), 3.0 * rng.normal(), 40.0 * rng.normal(), 3.0 * rng.normal()});
+  }
+  const std::vector<double> weights(cloud.size(), 1.0 / 300.0);
+  Eigen::Vector4d mean;
+  Eigen::Matrix4d cov;
+  weighted_moments(cloud, weights, mean, cov);
+  const std::vector<Particle> before = cloud;
+  // WHEN the next prediction adds 5 m/s per axis, more than the kernel would (h^2 9 < 25)
+  EXPECT_FALSE(regularise_velocity(cloud, mean, cov, optimal_kernel_bandwidth(300.0), 25.0, rng));
+  // THEN the cloud is unchanged
+  for (std::size_t k = 0; k < cloud.size(); ++k) EXPECT_EQ(cloud[k].vx, before[k].vx);
+}
+
+TEST(BernoulliParticleKernel, EffectiveSampleSize) {
+  EXPECT_NEAR(effective_sample_size(std::vector<double>{0.25, 0.25, 0.25, 0.25}), 4.0, 1e-12);
+  EXPECT_NEAR(effective_sample_size(std::vector<double>{1.0, 0.0, 0.0}), 1.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace skytrack::bernoulli

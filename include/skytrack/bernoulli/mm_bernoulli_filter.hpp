@@ -6,9 +6,10 @@
 // models by the mixing probabilities (step 2, eq. 18-19) with no particle interaction,
 // predicted by the model, joined by birth particles from a proposal round the previous
 // scan's plots (eq. 22-23), weighted by l(x) (eq. 16, 26) and resampled back to its fixed
-// count; the model probabilities come from each model's likelihood 1 - Delta (eq. 17), and
-// the output is the model-probability-weighted estimate (eq. 28).
-// 2-D: state [x, vx, y, vy] in the local ENU tracking frame. Deterministic for a seed.
+// count (then regularised in velocity when its few lineages after a birth need it, see
+// regularise_velocity); the model probabilities come from each model's likelihood 1 - Delta (eq.
+// 17), and the output is the model-probability-weighted estimate (eq. 28). 2-D: state [x, vx, y,
+// vy] in the local ENU tracking frame. Deterministic for a seed.
 #include <array>
 #include <span>
 #include <vector>
@@ -52,7 +53,7 @@ class MmBernoulliFilter {
                             const ModelDynamics& dynamics) noexcept;
   double likelihood_integral(int j, std::size_t survivors, std::size_t count) noexcept;
   /// Eq. 26-28 and step 3(3): weights times l(x), model moments, resampling to N_j, output.
-  void update_and_resample(const std::array<std::size_t, kMaxModels>& count,
+  void update_and_resample(const std::array<std::size_t, kMaxModels>& count, double dt,
                            BernoulliEstimate& estimate) noexcept;
 
   BernoulliSpec spec_;

@@ -112,6 +112,28 @@ ModelDynamics make_dynamics(const BernoulliModelSpec& model, double dt) noexcept
 void systematic_resample(std::span<const Particle> in, std::span<const double> weights, double u0,
                          std::span<Particle> out) noexcept;
 
+/// The regularised particle filter's kernel move (Musso, Oudjane & Le Gland 2001) on the
+/// velocity given the position, with Liu & West's (2001) shrinkage, for a cloud just
+/// resampled from a posterior of `mean` and `covariance`. With C the covariance of the
+/// velocity given the position and E[v|p] the regression of the velocity on the position:
+/// v <- E[v|p] + a (v - E[v|p]) + h L e, e ~ N(0, I2), L L' = C, a = sqrt(1 - h^2). The
+/// cloud keeps its mean and covariance (position-velocity ones too) and the copies of one
+/// parent spread over the posterior's velocity spread instead of staying identical.
+/// Applied only when the kernel is wider than the next prediction's own velocity noise
+/// (h^2 lambda_max(C) > prediction_velocity_variance [(m/s)^2] per axis), which otherwise
+/// spreads the copies at least as much. Returns whether the cloud was moved.
+bool regularise_velocity(std::span<Particle> cloud, const Eigen::Vector4d& mean,
+                         const Eigen::Matrix4d& covariance, double bandwidth,
+                         double prediction_velocity_variance, NormalSampler& rng) noexcept;
+
+/// Kish's effective sample size 1 / sum w^2 of normalised weights.
+double effective_sample_size(std::span<const double> weights) noexcept;
+
+/// The bandwidth of the Gaussian kernel that minimises the mean integrated squared error
+/// for a Gaussian density in 4 dimensions from `samples` independent draws,
+/// h = (4 / ((d + 2) n))^(1 / (d + 4)) (Silverman 1986, eq. 4.14; Musso et al. 2001).
+double optimal_kernel_bandwidth(double samples) noexcept;
+
 /// Weighted mean and covariance [x, vx, y, vy] of particles with weights summing to 1.
 void weighted_moments(std::span<const Particle> particles, std::span<const double> weights,
                       Eigen::Vector4d& mean, Eigen::Matrix4d& covariance) noexcept;
