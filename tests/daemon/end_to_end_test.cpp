@@ -186,13 +186,12 @@ TEST_F(EndToEnd, ReplayAtMaxRateRecordsTheOfflineTracks) {
   EXPECT_THAT(daemon.log(), HasSubstr("config/dds/loopback.xml"));
 }
 
-TEST_F(EndToEnd, EveryImplementedModeRecordsItsOfflineTracksOverDds) {
-  // GIVEN each mode's shipped profile on a scenario of its kind, tracked offline
-  const std::pair<const char*, const char*> modes[] = {{"paper001_mmbpf", "bernoulli"},
-                                                       {"paper000_exp1_groups", "group"},
-                                                       {"paper002_extended", "extended"}};
-  for (const auto& [scenario, mode] : modes) {
-    SCOPED_TRACE(mode);
+/// The daemon on a mode's shipped profile records the offline tracks of a scenario of its
+/// kind, replayed over DDS, and the mode's target is confirmed.
+class ModeEndToEnd : public EndToEnd {
+ protected:
+  void records_the_offline_tracks(const std::string& scenario, const std::string& mode) {
+    // GIVEN the mode's shipped profile on the scenario, tracked offline
     const std::string profile = kSource + "/config/profiles/" + mode + ".yaml";
     simulate_and_track_offline(scenario, profile);
     // Every frame kept for a late reader: the recorder's match may reach the daemon's writer
@@ -216,6 +215,18 @@ TEST_F(EndToEnd, EveryImplementedModeRecordsItsOfflineTracksOverDds) {
                        read_tracks(path("offline.tracks.jsonl")));
     EXPECT_THAT(read_file(path("live.tracks.jsonl")), HasSubstr("\"confirmed\""));
   }
+};
+
+TEST_F(ModeEndToEnd, BernoulliRecordsItsOfflineTracksOverDds) {
+  records_the_offline_tracks("paper001_mmbpf", "bernoulli");
+}
+
+TEST_F(ModeEndToEnd, GroupRecordsItsOfflineTracksOverDds) {
+  records_the_offline_tracks("paper000_exp1_groups", "group");
+}
+
+TEST_F(ModeEndToEnd, ExtendedRecordsItsOfflineTracksOverDds) {
+  records_the_offline_tracks("paper002_extended", "extended");
 }
 
 TEST_F(EndToEnd, TwoSensorsOnOnePlotTopicGiveTheOfflineTracks) {
