@@ -54,12 +54,12 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const PlotMea
   return process(time, plane_positions_, plane_noises_, partitions);
 }
 
-double ExtendedTracker::gate_distance(const ExtendedTrack& track, const Eigen::Vector2d& z,
-                                      const Eigen::Matrix2d& noise, double extent_weight,
-                                      double* log_det) const noexcept {
+double ExtendedTracker::gate_distance(int t, const Eigen::Vector2d& z, const Eigen::Matrix2d& noise,
+                                      double extent_weight, double* log_det) const noexcept {
+  const ExtendedTrack& track = tracks_[t];
   const PosMat H = position_matrix();
   const Eigen::Matrix2d G =
-      H * track.object.P * H.transpose() + extent_weight * track.object.extent + noise;
+      H * track.object.P * H.transpose() + extent_weight * association_extents_[t] + noise;
   const Eigen::LLT<Eigen::Matrix2d> llt(G);
   if (llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
   const Eigen::Vector2d nu = z - track.position();
@@ -94,9 +94,11 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
   }
   report.plots = n - report.rejected_plots;
 
+  association_extents_.clear();
   for (ExtendedTrack& track : tracks_) {
     if (dt > 0.0) estimator_.predict(track.object, dt);
     track.plots = 0;
+    association_extents_.push_back(association_extent(track));
   }
   if (partitions.empty()) {
     partitioner_.partition(positions_, spec_.partition_distance, groups_);
@@ -131,42 +133,40 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     noise /= static_cast<double>(group.size());
     gated_.clear();
     for (int t = 0; t < track_count; ++t) {
-      const double d2 = gate_distance(tracks_[t], mean, noise, 1.0, nullptr);
+      const double d2 = gate_distance(t, mean, noise, 1.0, nullptr);
       if (d2 <= spec_.gate) gated_.push_back({t, d2});
     }
     if (gated_.empty()) {
       unassigned.push_back(&group);
       continue;
     }
+    // A confirmed track's plots are not shared with a tentative one beside it: that would
+    // feed a duplicate until it is confirmed and takes the object's number.
+    const bool any_confirmed = std::any_of(gated_.begin(), gated_.end(), [this](const Gated& g) {
+      return tracks_[g.track].status == ExtendedTrackStatus::kConfirmed;
+    });
+    if (any_confirmed) {
+      std::erase_if(gated_, [this](const Gated& g) {
+        return tracks_[g.track].status != ExtendedTrackStatus::kConfirmed;
+      });
+    }
     if (gated_.size() == 1) {
       const int t = gated_.front().track;
       for (int i : group) {  // clutter beside the object stays out of its update
-        if (gate_distance(tracks_[t], positions_[i], noises_[i], kScatter, nullptr) <=
-            spec_.plot_gate) {
+        if (gate_distance(t, positions_[i], noises_[i], kScatter, nullptr) <= spec_.plot_gate) {
           track_plots_[t].push_back(i);
         }
       }
       continue;
     }
-    // Several tracks gate it (objects close or crossing): each plot to the track that
-    // explains it best, d^2 + ln det G (a Gaussian's negative log-likelihood) with the
-    // spread of a plot about the centre, X / 4 (scatterers uniform over the ellipse).
-    for (int i : group) {
-      int best = gated_.front().track;
-      double best_cost = std::numeric_limits<double>::infinity();
-      for (const Gated& g : gated_) {
-        double log_det = 0.0;
-        const double cost =
-            gate_distance(tracks_[g.track], positions_[i], noises_[i], kScatter, &log_det) +
-            log_det;
-        if (cost < best_cost) best_cost = cost, best = g.track;
-      }
-      if (gate_distance(tracks_[best], positions_[i], noises_[i], kScatter, nullptr) <=
-          spec_.plot_gate) {
-        track_plots_[best].push_back(i);
-      }
-    }
+    split_shared(group);
   }
+  // After the gated partitions, so a track is known to have found none of its own.
+  std::size_t kept = 0;
+  for (const std::vector<int>* group : unassigned) {
+    if (!claim_by_confirmed(*group)) unassigned[kept++] = group;
+  }
+  unassigned.resize(kept);
   for (int t = 0; t < track_count; ++t) {
     ExtendedTrack& track = tracks_[t];
     const std::vector<int>& plots = track_plots_[t];

@@ -95,7 +95,9 @@ struct ExtendedSpec {
   int delete_misses = 3;              // a confirmed track is deleted after this many misses
   double initial_speed_sigma = 20.0;  // [m/s] a new track's velocity prior (starts at 0)
   double initial_accel_sigma = 0.5;   // [m/s^2] the process noise: more is fitted to noise
-  double initial_extent_axis = 50.0;  // [m] floor of a new track's semi-axes
+  /// [m] floor of a new track's semi-axes, and of the semi-axes association uses (gate,
+  /// split of a shared partition), so a collapsed estimate does not shrink the gate.
+  double initial_extent_axis = 50.0;
   bool operator==(const ExtendedSpec&) const = default;
 };
 

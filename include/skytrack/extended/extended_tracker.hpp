@@ -1,12 +1,16 @@
 #pragma once
 // Several extended objects in clutter (issue 27, deliverable 2): per scan, the plots are
 // partitioned (the caller's partitions, e.g. the preprocessing's mean shift, or the
-// distance partitioning), partitions are gated by each track's extent and given to the
-// nearest track (a partition gated by several tracks, e.g. two crossing objects, is split
-// plot by plot), each track is updated by the profile's estimator, partitions no track
-// gates start tentative tracks, which are confirmed when they keep taking partitions, and
-// tracks that stop taking them are deleted. Deterministic: no random numbers, ties broken
-// by track number and plot index.
+// distance partitioning), partitions are gated by each track's extent (floored at a new
+// track's) and given to the gating track; a partition several confirmed tracks gate (two
+// crossing objects) is split plot by plot, the split refined by moving each track's centre
+// to the plots it holds (hard-assignment EM), and a tentative track never shares a
+// confirmed one's partition; a partition no track gates but whose plots lie in the plot
+// gate of a confirmed track that found none of its own goes to that track (the object seen
+// off its prediction), the others start tentative tracks; each track is updated by the
+// profile's estimator; tentative tracks are confirmed when they keep taking partitions,
+// and tracks that stop taking them are deleted. Deterministic: no random numbers, ties
+// broken by track number and plot index.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -72,11 +76,14 @@ class ExtendedTracker {
     int track = -1;
     double distance = 0.0;  // d^2
   };
-  /// d^2 of z from the track's centre with G = H P H' + extent_weight X + noise.
-  double gate_distance(const ExtendedTrack& track, const Eigen::Vector2d& z,
-                       const Eigen::Matrix2d& noise, double extent_weight,
-                       double* log_det) const noexcept;
+  /// d^2 of z from track t's centre with G = H P H' + extent_weight X + noise, X its
+  /// association extent.
+  double gate_distance(int t, const Eigen::Vector2d& z, const Eigen::Matrix2d& noise,
+                       double extent_weight, double* log_det) const noexcept;
   void associate(std::span<const std::vector<int>> partitions, ExtendedScanReport& report);
+  Eigen::Matrix2d association_extent(const ExtendedTrack& track) const noexcept;
+  void split_shared(const std::vector<int>& group);
+  bool claim_by_confirmed(const std::vector<int>& group);
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
   void two_point_velocity(ExtendedTrack& track) const noexcept;
   void manage(ExtendedScanReport& report);
@@ -96,6 +103,10 @@ class ExtendedTracker {
   std::vector<std::vector<int>> groups_;
   std::vector<std::vector<int>> track_plots_;
   std::vector<Gated> gated_;
+  std::vector<Eigen::Matrix2d> association_extents_;  // per track, this scan
+  std::vector<Eigen::Vector2d> split_centre_;         // per gating track, its centre in the split
+  std::vector<Eigen::Matrix2d> split_cov_;
+  std::vector<int> split_owner_;  // per plot of the partition, its index into gated_
   std::vector<const std::vector<int>*> unassigned_;
   std::vector<Eigen::Vector2d> plane_positions_;  // PlotMeasurements in the tracking plane
   std::vector<Eigen::Matrix2d> plane_noises_;

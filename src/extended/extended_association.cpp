@@ -1,0 +1,137 @@
+// The extended tracker's association of partitions several tracks or no track gate: the
+// split of a shared partition (hard-assignment EM) and the claim of an ungated partition by
+// a confirmed track seen off its prediction (see extended_tracker.hpp).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include "skytrack/extended/extended_tracker.hpp"
+
+namespace skytrack::extended {
+namespace {
+
+constexpr double kScatter = 0.25;  // covariance of a point uniform over E(0, X) is X / 4
+// Assign-and-move rounds of a shared partition's split: the centres settle in two or three.
+constexpr int kSplitIterations = 3;
+
+}  // namespace
+
+Eigen::Matrix2d ExtendedTracker::association_extent(const ExtendedTrack& track) const noexcept {
+  // The extent association uses is floored at a new track's semi-axes: an estimate that
+  // collapsed on a scan of two or three plots (SMF-EOT's empty Minkowski difference) would
+  // otherwise shrink the track's gate and its share of a split below the object it follows.
+  const double floor = spec_.initial_extent_axis * spec_.initial_extent_axis;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(track.object.extent);
+  if (eig.info() != Eigen::Success) return track.object.extent;
+  const Eigen::Vector2d axes = eig.eigenvalues().cwiseMax(floor);
+  return eig.eigenvectors() * axes.asDiagonal() * eig.eigenvectors().transpose();
+}
+
+void ExtendedTracker::split_shared(const std::vector<int>& group) {
+  // Several tracks gate it (objects close or crossing). A plot-by-plot split from the
+  // predictions alone starves the less certain track: its flatter likelihood loses every
+  // plot in the overlap, it coasts, grows flatter still and drifts off while the neighbour
+  // takes both objects' plots and may leave with the wrong object. Instead the split is a
+  // two-component mixture fitted by hard-assignment EM: assign each plot by its likelihood
+  // N(z; c, C + X / 4 + R) under each track's current centre c (covariance C), move each
+  // centre to its posterior given the plots it holds, and repeat, so each object's plots
+  // pull its own centre rather than the prediction's error deciding.
+  const int k = static_cast<int>(gated_.size());
+  // Tentative tracks sharing a partition keep the split from their predictions alone, so
+  // the better-placed one takes the plots and a duplicate starves and is dropped.
+  const int iterations = tracks_[gated_.front().track].status == ExtendedTrackStatus::kConfirmed
+                             ? kSplitIterations
+                             : 1;
+  split_centre_.resize(k);
+  split_cov_.resize(k);
+  const PosMat H = position_matrix();
+  // Confirmed tracks start the split from their predicted objects' shapes alone (C = 0):
+  // a track that faded before the crossing has the larger HPH', and with it in the first
+  // assignment its flatter likelihood would lose every plot, leaving it nothing to move to.
+  for (int g = 0; g < k; ++g) {
+    const ExtendedTrack& track = tracks_[gated_[g].track];
+    split_centre_[g] = track.position();
+    split_cov_[g].setZero();
+    if (iterations == 1) split_cov_[g].noalias() = H * track.object.P * H.transpose();
+  }
+  split_owner_.assign(group.size(), -1);
+  for (int iteration = 0; iteration < iterations; ++iteration) {
+    for (std::size_t p = 0; p < group.size(); ++p) {
+      const int i = group[p];
+      double best_cost = std::numeric_limits<double>::infinity();
+      split_owner_[p] = -1;
+      for (int g = 0; g < k; ++g) {
+        const Eigen::Matrix2d G =
+            split_cov_[g] + kScatter * association_extents_[gated_[g].track] + noises_[i];
+        const Eigen::LLT<Eigen::Matrix2d> llt(G);
+        if (llt.info() != Eigen::Success) continue;
+        const Eigen::Vector2d nu = positions_[i] - split_centre_[g];
+        const double cost =
+            nu.dot(llt.solve(nu)) + 2.0 * std::log(llt.matrixL()(0, 0) * llt.matrixL()(1, 1));
+        if (cost < best_cost) best_cost = cost, split_owner_[p] = g;
+      }
+    }
+    for (int g = 0; g < k; ++g) {  // each centre's posterior from the plots it holds
+      const ExtendedTrack& track = tracks_[gated_[g].track];
+      Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+      Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+      int count = 0;
+      for (std::size_t p = 0; p < group.size(); ++p) {
+        if (split_owner_[p] != g) continue;
+        mean += positions_[group[p]], noise += noises_[group[p]], ++count;
+      }
+      const Eigen::Matrix2d prior = H * track.object.P * H.transpose();
+      split_centre_[g] = track.position();
+      split_cov_[g] = prior;
+      if (count == 0) continue;
+      mean /= count;
+      const Eigen::Matrix2d spread =
+          (kScatter * association_extents_[gated_[g].track] + noise / count) / count;
+      const Eigen::LLT<Eigen::Matrix2d> llt(prior + spread);
+      if (llt.info() != Eigen::Success) continue;
+      const Eigen::Matrix2d K = llt.solve(prior).transpose();  // prior (prior + spread)^-1
+      split_centre_[g] += K * (mean - track.position());
+      split_cov_[g] = prior - K * prior;
+    }
+  }
+  for (std::size_t p = 0; p < group.size(); ++p) {
+    if (split_owner_[p] < 0) continue;
+    const int t = gated_[split_owner_[p]].track;
+    const int i = group[p];
+    if (gate_distance(t, positions_[i], noises_[i], kScatter, nullptr) <= spec_.plot_gate) {
+      track_plots_[t].push_back(i);
+    }
+  }
+}
+
+bool ExtendedTracker::claim_by_confirmed(const std::vector<int>& group) {
+  // A partition whose mean gates no track but whose plots fall inside the plot gate
+  // (HPH' + X / 4 + R, which widens as the track coasts) of a confirmed track that found
+  // no plots of its own this scan is that object seen off its prediction, not a new
+  // object: a tentative track started on it would duplicate the confirmed one and take its
+  // number when the confirmed one is dropped. A track that has its plots keeps them alone:
+  // a second cluster would read as extent.
+  const int min_plots = std::max(1, spec_.min_partition_plots);
+  int best = -1, best_count = 0;
+  for (int t = 0; t < static_cast<int>(tracks_.size()); ++t) {
+    if (tracks_[t].status != ExtendedTrackStatus::kConfirmed) continue;
+    if (static_cast<int>(track_plots_[t].size()) >= min_plots) continue;
+    int count = 0;
+    for (int i : group) {
+      count += gate_distance(t, positions_[i], noises_[i], kScatter, nullptr) <= spec_.plot_gate;
+    }
+    if (count > best_count) best_count = count, best = t;
+  }
+  if (best < 0 || best_count < min_plots) return false;
+  for (int i : group) {
+    if (gate_distance(best, positions_[i], noises_[i], kScatter, nullptr) <= spec_.plot_gate) {
+      track_plots_[best].push_back(i);
+    }
+  }
+  return true;
+}
+
+}  // namespace skytrack::extended
