@@ -53,10 +53,13 @@ sed -e "s|^  domain: 0|  domain: $domain|" \
   -e "s|profile: profiles/default.yaml|profile: $profile|" \
   -e "s|level: info|level: warn|" \
   -e "s|status_period: 1.0|status_period: 0.5|" \
+  -e "s|history_depth: 1         # batches kept|history_depth: 1000      # batches kept|" \
   ${ADVERSARY_MAX_PLOTS:+-e "s|max_plots_per_scan: 100000|max_plots_per_scan: $ADVERSARY_MAX_PLOTS|"} \
   "$root/config/skytrackd.yaml" >"$config"
-if ! grep -q "^  domain: $domain\$" "$config"; then
-  echo "adversarial-load: could not set the domain in the derived configuration" >&2
+# Every TrackBatch kept for a late joiner: under load the adversary's reader may match the
+# daemon's writer only after its first frames, which it must still compare.
+if ! grep -q "^  domain: $domain\$" "$config" || ! grep -q "history_depth: 1000 " "$config"; then
+  echo "adversarial-load: could not set the domain or the TrackBatch history in the derived configuration" >&2
   exit 2
 fi
 
