@@ -68,12 +68,7 @@ void BernoulliTracker::report(const Watch& watch, const BernoulliEstimate& estim
 
 void BernoulliTracker::process(const PlotScan& look, Preprocessing& pre, TrackFrame& frame,
                                ScanReport& report) {
-  frame.sensor = look.sensor;
-  frame.scan = look.scan;
-  frame.time = look.time;
-  frame.tracks.clear();
-  frame.associations.clear();
-  frame.events.clear();
+  begin_frame(look, frame);
   Watch& watch = watch_of(look.sensor);
   const Eigen::Vector2d platform = look.platform.position.head<2>();
   const BernoulliEstimate estimate = watch.filter.step(look.time, platform, pre.plots());
@@ -102,12 +97,7 @@ void BernoulliTracker::process(const PlotScan& look, Preprocessing& pre, TrackFr
 }
 
 void BernoulliTracker::report_only(const PlotScan& batch, TrackFrame& frame, ScanReport& report) {
-  frame.sensor = batch.sensor;
-  frame.scan = batch.scan;
-  frame.time = batch.time;
-  frame.tracks.clear();
-  frame.associations.clear();
-  frame.events.clear();
+  begin_frame(batch, frame);
   report.plots = static_cast<int>(batch.plots.size());
   const auto it = watches_.find(batch.sensor);
   if (it == watches_.end()) return;

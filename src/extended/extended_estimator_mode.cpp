@@ -3,18 +3,6 @@
 #include <string>
 
 namespace skytrack::extended {
-namespace {
-
-void start_frame(const PlotScan& scan, TrackFrame& frame) {
-  frame.sensor = scan.sensor;
-  frame.scan = scan.scan;
-  frame.time = scan.time;
-  frame.tracks.clear();
-  frame.associations.clear();
-  frame.events.clear();
-}
-
-}  // namespace
 
 Expected<ExtendedMode> ExtendedMode::create(const config::TrackingProfile& profile) {
   const ExtendedSpec& spec = profile.extended;
@@ -57,7 +45,7 @@ void ExtendedMode::report(Watch& watch, TrackFrame& frame, ScanReport& report) c
 
 void ExtendedMode::process(const PlotScan& look, Preprocessing& pre, TrackFrame& frame,
                            ScanReport& report) {
-  start_frame(look, frame);
+  begin_frame(look, frame);
   Watch& watch = watch_of(look.sensor);
   const ExtendedScanReport scan = watch.tracker.process(look.time, pre.plots());
   report.plots_invalid += scan.rejected_plots;
@@ -87,7 +75,7 @@ void ExtendedMode::process(const PlotScan& look, Preprocessing& pre, TrackFrame&
 }
 
 void ExtendedMode::report_only(const PlotScan& batch, TrackFrame& frame, ScanReport& report) {
-  start_frame(batch, frame);
+  begin_frame(batch, frame);
   report.plots = static_cast<int>(batch.plots.size());
   const auto it = watches_.find(batch.sensor);
   if (it != watches_.end()) this->report(it->second, frame, report);

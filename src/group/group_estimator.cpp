@@ -73,12 +73,7 @@ void GroupEstimator::report(Watch& watch, const std::vector<GroupEstimate>& esti
 
 void GroupEstimator::process(const PlotScan& look, Preprocessing& pre, TrackFrame& frame,
                              ScanReport& report) {
-  frame.sensor = look.sensor;
-  frame.scan = look.scan;
-  frame.time = look.time;
-  frame.tracks.clear();
-  frame.associations.clear();
-  frame.events.clear();
+  begin_frame(look, frame);
   Watch& watch = watch_of(look.sensor);
   // Nothing to protect: a group's plots are dense, clutter sparse (paper 000 §3.1).
   const clutter::ClutterRejectionResult& rejection = pre.reject_clutter({});
@@ -94,12 +89,7 @@ void GroupEstimator::process(const PlotScan& look, Preprocessing& pre, TrackFram
 }
 
 void GroupEstimator::report_only(const PlotScan& batch, TrackFrame& frame, ScanReport& report) {
-  frame.sensor = batch.sensor;
-  frame.scan = batch.scan;
-  frame.time = batch.time;
-  frame.tracks.clear();
-  frame.associations.clear();
-  frame.events.clear();
+  begin_frame(batch, frame);
   report.plots = static_cast<int>(batch.plots.size());
   const auto it = watches_.find(batch.sensor);
   if (it == watches_.end()) return;

@@ -12,6 +12,16 @@
 
 namespace skytrack {
 
+/// An empty frame at a look's (or batch's) sensor, scan and time, for an estimator to fill.
+inline void begin_frame(const PlotScan& look, TrackFrame& frame) {
+  frame.sensor = look.sensor;
+  frame.scan = look.scan;
+  frame.time = look.time;
+  frame.tracks.clear();
+  frame.associations.clear();
+  frame.events.clear();
+}
+
 class Estimator {
  public:
   virtual ~Estimator() = default;
