@@ -22,42 +22,27 @@ ImmBernoulliFilter::ImmBernoulliFilter(const BernoulliSpec& spec, int particles_
   work_model_.resize(total);
   weight_.resize(total);
   ratio_.resize(total);
-  last_.model_count = spec_.model_count;
+  book_.reset(spec_.model_count);
 }
 
 BernoulliEstimate ImmBernoulliFilter::step(double time, const Eigen::Vector2d& platform,
                                            std::span<const PolarPlot2d> plots) noexcept {
-  if (!std::isfinite(time) || (started_ && time <= last_time_)) {
-    BernoulliEstimate skipped = last_;
-    skipped.scan_skipped = true;
-    return skipped;
-  }
+  if (!book_.follows(time)) return book_.skipped();
   return begin_scan(time, history_.load(platform, plots));
 }
 
 BernoulliEstimate ImmBernoulliFilter::step(double time, const Eigen::Vector2d& platform,
                                            std::span<const PlotMeasurement> plots) noexcept {
-  if (!std::isfinite(time) || (started_ && time <= last_time_)) {
-    BernoulliEstimate skipped = last_;
-    skipped.scan_skipped = true;
-    return skipped;
-  }
+  if (!book_.follows(time)) return book_.skipped();
   return begin_scan(time, history_.load(plots, platform));
 }
 
 BernoulliEstimate ImmBernoulliFilter::begin_scan(double time, int rejected) noexcept {
-  BernoulliEstimate estimate = last_;
-  estimate.time = time;
-  estimate.scan_skipped = false;
-  estimate.plots_rejected = rejected;
-  estimate.plots_used = static_cast<int>(history_.current().size());
-  if (started_) recurse(time - last_time_, estimate);
-  if (estimate.target_reported && !last_.target_reported) ++estimate.report_epoch;
-  started_ = true;
-  last_time_ = time;
+  BernoulliEstimate estimate =
+      book_.open(time, rejected, static_cast<int>(history_.current().size()));
+  if (book_.started()) recurse(time - book_.last_time(), estimate);
   history_.advance(time);
-  last_ = estimate;
-  return estimate;
+  return book_.close(estimate);
 }
 
 std::size_t ImmBernoulliFilter::predict(double survival_mass,

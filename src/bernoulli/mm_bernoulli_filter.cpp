@@ -27,45 +27,28 @@ void MmBernoulliFilter::reset() noexcept {
   for (int j = 0; j < spec_.model_count; ++j) mu_[j] = spec_.birth_model_probabilities[j];
   q_ = 0.0;
   has_posterior_ = false;
-  started_ = false;
   history_.clear();
-  last_ = BernoulliEstimate{};
-  last_.model_count = spec_.model_count;
+  book_.reset(spec_.model_count);
 }
 
 BernoulliEstimate MmBernoulliFilter::step(double time, const Eigen::Vector2d& platform,
                                           std::span<const PlotMeasurement> plots) noexcept {
-  if (!std::isfinite(time) || (started_ && time <= last_time_)) {
-    BernoulliEstimate skipped = last_;
-    skipped.scan_skipped = true;
-    return skipped;
-  }
+  if (!book_.follows(time)) return book_.skipped();
   return begin_scan(time, history_.load(plots, platform));
 }
 
 BernoulliEstimate MmBernoulliFilter::step(double time, const Eigen::Vector2d& platform,
                                           std::span<const PolarPlot2d> plots) noexcept {
-  if (!std::isfinite(time) || (started_ && time <= last_time_)) {
-    BernoulliEstimate skipped = last_;
-    skipped.scan_skipped = true;
-    return skipped;
-  }
+  if (!book_.follows(time)) return book_.skipped();
   return begin_scan(time, history_.load(platform, plots));
 }
 
 BernoulliEstimate MmBernoulliFilter::begin_scan(double time, int rejected) noexcept {
-  BernoulliEstimate estimate = last_;
-  estimate.time = time;
-  estimate.scan_skipped = false;
-  estimate.plots_rejected = rejected;
-  estimate.plots_used = static_cast<int>(history_.current().size());
-  if (started_) recurse(time - last_time_, estimate);  // the first scan only seeds births
-  if (estimate.target_reported && !last_.target_reported) ++estimate.report_epoch;
-  started_ = true;
-  last_time_ = time;
+  BernoulliEstimate estimate =
+      book_.open(time, rejected, static_cast<int>(history_.current().size()));
+  if (book_.started()) recurse(time - book_.last_time(), estimate);
   history_.advance(time);
-  last_ = estimate;
-  return estimate;
+  return book_.close(estimate);
 }
 
 std::size_t MmBernoulliFilter::predict_model(int j, double survival_mass, double birth_mass,

@@ -24,35 +24,7 @@
 #include "skytrack/filter/pda.hpp"
 #include "skytrack/motion/motion_model.hpp"
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define SKYTRACK_COUNTING_MALLOC 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define SKYTRACK_COUNTING_MALLOC 0
-#endif
-#endif
-#if !defined(SKYTRACK_COUNTING_MALLOC) && defined(__GLIBC__)
-#define SKYTRACK_COUNTING_MALLOC 1
-#endif
-#ifndef SKYTRACK_COUNTING_MALLOC
-#define SKYTRACK_COUNTING_MALLOC 0
-#endif
-
-#if SKYTRACK_COUNTING_MALLOC
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-extern "C" void* __libc_malloc(std::size_t size) noexcept;
-// Replaces malloc for this test program only; forwards to glibc's allocator, so free,
-// realloc and calloc (not replaced) stay consistent with it.
-extern "C" void* malloc(std::size_t size) noexcept {
-  if (g_counting.load(std::memory_order_relaxed)) {
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-  }
-  return __libc_malloc(size);
-}
-#endif
+#include "../counting_malloc.hpp"
 
 namespace skytrack {
 namespace {

@@ -1,6 +1,6 @@
 // The filter's per-scan path (LabeledBoxPhd::step on ready cells) must not touch the heap
-// once its workspaces have grown to the scene: a counting malloc (glibc, no sanitizer; as in
-// tests/filter/hot_path_allocation_test.cpp) counts every malloc in the process while the
+// once its workspaces have grown to the scene: a counting malloc (tests/counting_malloc.hpp)
+// counts every malloc in the process while the
 // window is open. The preprocessing is not in the window: ClutterRejector rebuilds its k-d
 // tree node pools every scan (docs/clutter_rejection.md).
 #include <atomic>
@@ -13,33 +13,7 @@
 
 #include "skytrack/group/labeled_box_phd.hpp"
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define SKYTRACK_GROUP_COUNTING_MALLOC 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-#define SKYTRACK_GROUP_COUNTING_MALLOC 0
-#endif
-#endif
-#if !defined(SKYTRACK_GROUP_COUNTING_MALLOC) && defined(__GLIBC__)
-#define SKYTRACK_GROUP_COUNTING_MALLOC 1
-#endif
-#ifndef SKYTRACK_GROUP_COUNTING_MALLOC
-#define SKYTRACK_GROUP_COUNTING_MALLOC 0
-#endif
-
-#if SKYTRACK_GROUP_COUNTING_MALLOC
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-extern "C" void* __libc_malloc(std::size_t size) noexcept;
-extern "C" void* malloc(std::size_t size) noexcept {
-  if (g_counting.load(std::memory_order_relaxed)) {
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-  }
-  return __libc_malloc(size);
-}
-#endif
+#include "../counting_malloc.hpp"
 
 namespace skytrack::group {
 namespace {
@@ -62,7 +36,7 @@ std::vector<GroupCell> cells_at(double t) {
 }
 
 TEST(GroupAllocation, FilterStepAllocatesNothingInSteadyState) {
-#if !SKYTRACK_GROUP_COUNTING_MALLOC
+#if !SKYTRACK_COUNTING_MALLOC
   GTEST_SKIP() << "the counting malloc needs glibc and no sanitizer";
 #else
   GroupSpec spec;

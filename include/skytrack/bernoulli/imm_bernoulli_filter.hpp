@@ -19,6 +19,7 @@
 #include "skytrack/bernoulli/normal_sampler.hpp"
 #include "skytrack/bernoulli/particle_kernel.hpp"
 #include "skytrack/bernoulli/plot_history.hpp"
+#include "skytrack/bernoulli/scan_book.hpp"
 
 namespace skytrack::bernoulli {
 
@@ -31,7 +32,7 @@ class ImmBernoulliFilter {
                          std::span<const PolarPlot2d> plots) noexcept;
   BernoulliEstimate step(double time, const Eigen::Vector2d& platform,
                          std::span<const PlotMeasurement> plots) noexcept;
-  const BernoulliEstimate& last() const noexcept { return last_; }
+  const BernoulliEstimate& last() const noexcept { return book_.last(); }
 
  private:
   BernoulliEstimate begin_scan(double time, int rejected) noexcept;
@@ -50,9 +51,7 @@ class ImmBernoulliFilter {
   std::array<std::size_t, kMaxModels + 1> birth_begin_{};  // births of model j in the work cloud
   double q_ = 0.0;
   bool has_posterior_ = false;
-  bool started_ = false;
-  double last_time_ = 0.0;
-  BernoulliEstimate last_;
+  ScanBook book_{1};
 };
 
 }  // namespace skytrack::bernoulli

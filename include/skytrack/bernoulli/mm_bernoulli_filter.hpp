@@ -22,6 +22,7 @@
 #include "skytrack/bernoulli/normal_sampler.hpp"
 #include "skytrack/bernoulli/particle_kernel.hpp"
 #include "skytrack/bernoulli/plot_history.hpp"
+#include "skytrack/bernoulli/scan_book.hpp"
 #include "skytrack/measurement/plot_measurement.hpp"
 
 namespace skytrack::bernoulli {
@@ -41,7 +42,7 @@ class MmBernoulliFilter {
   BernoulliEstimate step(double time, const Eigen::Vector2d& platform,
                          std::span<const PolarPlot2d> plots) noexcept;
 
-  const BernoulliEstimate& last() const noexcept { return last_; }
+  const BernoulliEstimate& last() const noexcept { return book_.last(); }
   /// Back to no target and no history; the random engine continues.
   void reset() noexcept;
 
@@ -68,9 +69,7 @@ class MmBernoulliFilter {
   std::array<double, kMaxModels> mu_{};                // mu_{k-1}
   double q_ = 0.0;
   bool has_posterior_ = false;
-  bool started_ = false;
-  double last_time_ = 0.0;
-  BernoulliEstimate last_;
+  ScanBook book_{1};
 };
 
 }  // namespace skytrack::bernoulli
