@@ -230,6 +230,18 @@ Expected<TrackBatchSample> to_dds(const TrackFrame& frame) {
   for (std::uint32_t i = 0; i < b.association_scans._length; ++i) {
     b.association_scans._buffer[i] = frame.associations[i].scan.value_or(frame.scan);
   }
+  std::size_t sources = 0;
+  for (const TrackReport& t : frame.tracks) sources += t.sources.size();
+  if (!alloc_zeroed(b.track_sources, sources)) {
+    return unexpected(out_of_memory("TrackBatch.track_sources"));
+  }
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < frame.tracks.size(); ++i) {
+    for (const TrackSource& source : frame.tracks[i].sources) {
+      b.track_sources._buffer[next++] = {static_cast<std::uint32_t>(i), source.sensor,
+                                         source.track};
+    }
+  }
   if (!alloc_zeroed(b.events, frame.events.size()))
     return unexpected(out_of_memory("TrackBatch.events"));
   for (std::size_t i = 0; i < frame.events.size(); ++i) {
@@ -261,6 +273,9 @@ Expected<TrackFrame> from_dds(const skytrack_dds_TrackBatch& batch) {
                       std::to_string(batch.association_scans._length) + ", expected 0 or " +
                       std::to_string(batch.associations._length) + " (associations length)");
   }
+  if (auto e = missing_buffer(batch.track_sources, "TrackBatch.track_sources")) {
+    return unexpected(*e);
+  }
   TrackFrame frame;
   frame.sensor = batch.sensor;
   frame.scan = batch.scan;
@@ -279,6 +294,15 @@ Expected<TrackFrame> from_dds(const skytrack_dds_TrackBatch& batch) {
     if (i < batch.association_scans._length && batch.association_scans._buffer[i] != batch.scan) {
       frame.associations.back().scan = batch.association_scans._buffer[i];
     }
+  }
+  for (std::uint32_t i = 0; i < batch.track_sources._length; ++i) {
+    const skytrack_dds_TrackSource& s = batch.track_sources._buffer[i];
+    if (s.track_index >= frame.tracks.size()) {
+      return make_error(field("TrackBatch.track_sources", i, "track_index") + ": " +
+                        std::to_string(s.track_index) + " is not a track index (" +
+                        std::to_string(frame.tracks.size()) + " tracks)");
+    }
+    frame.tracks[s.track_index].sources.push_back({s.sensor, s.track});
   }
   frame.events.reserve(batch.events._length);
   for (std::uint32_t i = 0; i < batch.events._length; ++i) {

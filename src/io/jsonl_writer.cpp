@@ -188,6 +188,16 @@ void put_track(Buffer& out, const TrackReport& track) {
     put_key(out, "members", first);
     fmt::format_to(std::back_inserter(out), "{}", *track.members);
   }
+  if (!track.sources.empty()) {
+    put_key(out, "sources", first);
+    out.push_back('[');
+    for (std::size_t i = 0; i < track.sources.size(); ++i) {
+      if (i) out.push_back(',');
+      fmt::format_to(std::back_inserter(out), "{{\"sensor\":{},\"track\":{}}}",
+                     track.sources[i].sensor, track.sources[i].track);
+    }
+    out.push_back(']');
+  }
   out.push_back('}');
 }
 

@@ -44,6 +44,18 @@ Expected<std::vector<std::pair<std::string, double>>> parse_modes(const element&
   return modes;
 }
 
+Expected<TrackSource> parse_source(const element& value, const std::string& path) {
+  auto obj = as_object(value, path);
+  if (!obj) return unexpected(obj.error());
+  auto sensor = required<std::int64_t>(*obj, path, "sensor", as_integer);
+  if (!sensor) return unexpected(sensor.error());
+  if (*sensor < 0 || *sensor > 0xFFFFFFFFLL)
+    return make_error(join(path, "sensor") + ": out of range");
+  auto track = required<std::int64_t>(*obj, path, "track", as_integer);
+  if (!track) return unexpected(track.error());
+  return TrackSource{static_cast<std::uint32_t>(*sensor), *track};
+}
+
 Expected<TrackReport> parse_track(const element& value, const std::string& path) {
   auto obj = as_object(value, path);
   if (!obj) return unexpected(obj.error());
@@ -100,10 +112,19 @@ Expected<TrackReport> parse_track(const element& value, const std::string& path)
   if (*members) {
     if (**members < 0) return make_error(join(path, "members") + ": negative");
     if (**members > std::numeric_limits<int>::max()) {
-      return make_error(join(path, "members") + ": " + std::to_string(**members) +
-                        " is beyond " + std::to_string(std::numeric_limits<int>::max()));
+      return make_error(join(path, "members") + ": " + std::to_string(**members) + " is beyond " +
+                        std::to_string(std::numeric_limits<int>::max()));
     }
     track.members = static_cast<int>(**members);
+  }
+  if (const auto sources = field(*obj, "sources")) {
+    auto arr = as_array(*sources, join(path, "sources"));
+    if (!arr) return unexpected(arr.error());
+    for (element item : *arr) {
+      auto source = parse_source(item, indexed(join(path, "sources"), track.sources.size()));
+      if (!source) return unexpected(source.error());
+      track.sources.push_back(*source);
+    }
   }
   return track;
 }

@@ -295,6 +295,29 @@ TEST(TrackBatchConversion, TracksAssociationsAndEventsRoundTrip) {
   EXPECT_EQ(round_trip(frame), frame);
 }
 
+TEST(TrackBatchConversion, FusedTracksKeepTheirSources) {
+  TrackReport fused = track_2d();
+  fused.sources = {{1, 12}, {2, 7}};
+  TrackReport single = group_track();
+  single.sources = {{3, 1099511627776}};
+  const TrackFrame frame = frame_with({track_3d(), fused, single});
+  const TrackFrame back = round_trip(frame);
+  EXPECT_EQ(back, frame);
+  EXPECT_TRUE(back.tracks[0].sources.empty());
+}
+
+TEST(TrackBatchConversion, SourceNamingNoTrackIsRefused) {
+  TrackReport fused = track_2d();
+  fused.sources = {{1, 12}};
+  auto sample = to_dds(frame_with({fused}));
+  ASSERT_TRUE(sample);
+  sample->get().track_sources._buffer[0].track_index = 5;
+  const auto back = from_dds(sample->get());
+  ASSERT_FALSE(back);
+  EXPECT_THAT(back.error().message,
+              HasSubstr("track_sources[0].track_index: 5 is not a track index"));
+}
+
 TEST(TrackBatchConversion, ThreeDimensionalTrackWithoutCovarianceRoundTrips) {
   TrackReport t = track_3d();
   t.covariance.clear();

@@ -268,11 +268,11 @@ TEST(SampleCheck, RefusesBooleansAndEnumeratorsOutsideTheirValues) {
   std::vector<std::byte> status = tracks;
   status[56] = std::byte{4};  // TRACK_DELETED is 3
   EXPECT_THAT(message(check(&skytrack_dds_TrackBatch_desc, status)),
-              HasSubstr("#5[0].#2 at byte 52 of 480: enumerator 4, at most 3"));
+              HasSubstr("#5[0].#2 at byte 52 of 488: enumerator 4, at most 3"));
   std::vector<std::byte> kind = tracks;
   kind[60] = std::byte{3};  // OBJECT_EXTENDED is 2
   EXPECT_THAT(message(check(&skytrack_dds_TrackBatch_desc, kind)),
-              HasSubstr("#5[0].#3 at byte 56 of 480: enumerator 3, at most 2"));
+              HasSubstr("#5[0].#3 at byte 56 of 488: enumerator 3, at most 2"));
 }
 
 TEST(SampleCheck, FollowsAppendableTypesAcrossIdlVersions) {

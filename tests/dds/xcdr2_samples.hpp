@@ -151,6 +151,11 @@ inline Writer encode(const skytrack_dds_TrackBatch& b, bool big_endian) {
     w.string(e.detail);
   });
   sequence(w, b.association_scans, [&](std::uint64_t v) { w.u64(v); });
+  delimited_sequence(w, b.track_sources, [&](const skytrack_dds_TrackSource& s) {
+    w.u32(s.track_index);
+    w.u32(s.sensor);
+    w.u64(static_cast<std::uint64_t>(s.track));
+  });
   w.close(d);
   return w;
 }
@@ -227,7 +232,7 @@ inline constexpr std::uint32_t kShiftedAssociations = 177'950'000;
 /// (b) A TrackBatch with one Track whose mode_probabilities claims 4 doubles with 16 bytes
 /// present, the last member of the Track's DHEADER. Cyclone's validation resumes at the end
 /// of that DHEADER, its read 16 bytes later: the read takes the associations' count from the
-/// bytes after the batch's last member, which the validation skips as members of a newer IDL.
+/// first word of association_scans' value, which the validation takes as part of a u64.
 inline Writer shifted_track_batch(std::uint32_t associations, bool big_endian,
                                   std::uint32_t sensor = 99) {
   Writer w(big_endian);
@@ -262,9 +267,14 @@ inline Writer shifted_track_batch(std::uint32_t associations, bool big_endian,
     w.length(0);
     w.close(empty);
   }
-  w.length(0);  // association_scans
-  // Where the shifted read looks for the associations' count; the rest pads to 1568 bytes.
-  w.u32(associations);
+  // association_scans: one value whose first word is where the shifted read looks for the
+  // associations' count (any u64 is valid to the validation); then an empty track_sources.
+  w.length(1);
+  w.u64(big_endian ? std::uint64_t{associations} << 32 : std::uint64_t{associations});
+  const std::size_t sources = w.open();
+  w.length(0);
+  w.close(sources);
+  // The rest pads to 1568 bytes.
   while (w.size() < 1568) w.u32(0);
   w.close(d);
   return w;

@@ -92,6 +92,10 @@ TEST(TrackFrameParser, RejectsInvalidTracks) {
       // beyond int: was cast unchecked (fuzz finding, fuzz/seeds/track_line)
       {R"({"sensor":0,"scan":0,"time":0,"tracks":[{"id":1,"status":"confirmed","position":[0,0],"members":10995113138}]})",
        "tracks[0].members: 10995113138 is beyond 2147483647"},
+      {R"({"sensor":0,"scan":0,"time":0,"tracks":[{"id":1,"status":"confirmed","position":[0,0],"sources":[{"sensor":1}]}]})",
+       "tracks[0].sources[0].track: missing"},
+      {R"({"sensor":0,"scan":0,"time":0,"tracks":[{"id":1,"status":"confirmed","position":[0,0],"sources":[{"sensor":-1,"track":2}]}]})",
+       "tracks[0].sources[0].sensor: out of range"},
   };
   for (const auto& c : cases) {
     const auto frame = parse_track_frame(c.line);
@@ -122,6 +126,7 @@ TEST(TrackFrameWriter, RoundTripsBitExactly) {
   group.position = {-500.0, 300.0, 0.0};
   group.extent = (Eigen::Matrix2d() << 400.0, 10.0, 10.0, 300.0).finished();
   group.members = 15;
+  group.sources = {{1, 12}, {4, 1099511627777}};
   frame.tracks = {point, group};
   frame.associations = {{12, 3, 0.93, std::nullopt}, {13, 4, 1.0, 41}};
   frame.events = {{TrackEventType::kBranchCreated, 12, "son 2 from \"plot\" 5\n", {}}};

@@ -28,6 +28,14 @@ inline bool is_reported_as_firm(TrackStatus status) {
 /// confirmed track is given.
 inline constexpr std::int64_t kProvisionalNumber = std::int64_t{1} << 40;
 
+/// A local track a fused system track is made of: the sensor (tracker) and its track number.
+struct TrackSource {
+  std::uint32_t sensor = 0;
+  std::int64_t track = 0;
+
+  bool operator==(const TrackSource&) const = default;
+};
+
 struct TrackReport {
   std::int64_t id = 0;
   TrackStatus status = TrackStatus::kTentative;
@@ -41,6 +49,8 @@ struct TrackReport {
   std::optional<double> quality;
   std::optional<Eigen::Matrix2d> extent;
   std::optional<int> members;
+  /// Fusion output only: the local tracks this system track fuses (empty elsewhere).
+  std::vector<TrackSource> sources;
 
   bool operator==(const TrackReport&) const = default;
 };
