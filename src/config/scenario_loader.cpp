@@ -229,6 +229,25 @@ ClutterSpec read_clutter(YamlSection s, const SensorSpec& sensor, int dimensions
   return clutter;
 }
 
+sim::RandomTargetsSpec read_random_targets(YamlSection s, int dimensions) {
+  sim::RandomTargetsSpec spec;
+  s.integer("count", spec.count, Range{1.0, 1000000.0}, true);
+  for (const char* axis : {"x", "y"}) {
+    if (!s.has(axis)) s.error(axis, "missing required key: the box [min, max] [m]");
+  }
+  read_interval(s, "x", spec.x);
+  read_interval(s, "y", spec.y);
+  read_interval(s, "z", spec.z);
+  if (dimensions == 3 && !s.has("z")) s.error("z", "missing required key in a 3-D scenario");
+  if (dimensions == 2 && s.has("z")) s.error("z", "only in a 3-D scenario");
+  s.number("velocity_sigma", spec.velocity_sigma, Range::non_negative());
+  s.number("acceleration_noise", spec.acceleration_noise, Range::non_negative());
+  s.number("step", spec.step, Range::positive());
+  s.integer("first_id", spec.first_id, Range::non_negative());
+  s.finish();
+  return spec;
+}
+
 Expected<Scenario> read_scenario(const YAML::Node& root, ErrorList& errors) {
   YamlSection top(root, "", errors);
   Scenario scenario;
@@ -270,6 +289,10 @@ Expected<Scenario> read_scenario(const YAML::Node& root, ErrorList& errors) {
       errors.add(root["targets"], path + ".id",
                  "duplicate target id " + std::to_string(scenario.targets.back().id));
     }
+  }
+  if (top.has("random_targets")) {
+    scenario.random_targets =
+        read_random_targets(top.section("random_targets"), scenario.dimensions);
   }
   for (const auto& target : scenario.targets) {
     if (target.parent && !ids.count(*target.parent)) {

@@ -9,6 +9,7 @@
 
 #include "skytrack/geometry/angles.hpp"
 #include "skytrack/geometry/frames.hpp"
+#include "skytrack/sim/random_targets.hpp"
 #include "transponder_reply.hpp"
 
 namespace skytrack::sim {
@@ -57,6 +58,7 @@ Expected<Simulator> Simulator::create(Scenario scenario, std::uint64_t seed) {
     return make_error("sensor.sigma: a Cartesian sensor needs x, y" +
                       std::string(three_d ? ", z" : "") + " sigmas");
   }
+  if (auto added = add_random_targets(scenario, seed); !added) return unexpected(added.error());
   Simulator simulator(std::move(scenario), seed);
   if (auto built = simulator.build_targets(); !built) return unexpected(built.error());
   return simulator;

@@ -77,6 +77,29 @@ targets:
   EXPECT_EQ(scenario->targets[1].parent, 1);
 }
 
+TEST(ScenarioLoader, ReadsARandomPopulationAndNamesItsMistakes) {
+  const auto scenario = parse_scenario(std::string(kMinimal) + R"(
+random_targets: {count: 5, x: [-400, 400], y: [-400, 400], velocity_sigma: 5,
+                 acceleration_noise: 0.5, first_id: 10}
+)",
+                                       "population.yaml");
+  ASSERT_TRUE(scenario) << scenario.error().message;
+  ASSERT_TRUE(scenario->random_targets);
+  EXPECT_EQ(scenario->random_targets->count, 5);
+  EXPECT_EQ(scenario->random_targets->first_id, 10);
+  EXPECT_EQ(scenario->random_targets->step, 1.0);
+  const auto wrong = parse_scenario(std::string(kMinimal) + R"(
+random_targets: {count: 0, x: [400, -400], z: [0, 1]}
+)",
+                                    "wrong.yaml");
+  ASSERT_FALSE(wrong);
+  const std::string& message = wrong.error().message;
+  EXPECT_NE(message.find("random_targets.count"), std::string::npos) << message;
+  EXPECT_NE(message.find("random_targets.x: expected [min, max]"), std::string::npos) << message;
+  EXPECT_NE(message.find("random_targets.y: missing required key"), std::string::npos) << message;
+  EXPECT_NE(message.find("random_targets.z: only in a 3-D scenario"), std::string::npos) << message;
+}
+
 TEST(ScenarioLoader, ReadsDetectionWindowsPatchesAndFalseObjects) {
   const auto scenario = parse_scenario(std::string(kMinimal) + R"(
 clutter: {mean: 5, range: [100, 1000]}

@@ -114,6 +114,20 @@ struct ClutterSpec {
   Eigen::Vector2d x{0.0, 0.0}, y{0.0, 0.0}, z{0.0, 0.0};
 };
 
+/// A population drawn at simulation time from the run's seed (so `--seed` draws another):
+/// `count` point targets born at the start, positions uniform in the box, velocities zero-mean
+/// normal per axis, and a random acceleration held constant over each `step` with variance
+/// q / step per axis, so that the velocity diffuses as under white-noise acceleration of
+/// spectral density q (the constant-velocity truth of a nearly-constant-velocity model).
+struct RandomTargetsSpec {
+  int count = 0;
+  Eigen::Vector2d x{0.0, 0.0}, y{0.0, 0.0}, z{0.0, 0.0};  // [m] box [min, max] per axis
+  double velocity_sigma = 0.0;                            // [m/s] per axis
+  double acceleration_noise = 0.0;                        // q [m^2/s^3]
+  double step = 1.0;                                      // [s]
+  std::int64_t first_id = 1;                              // ids first_id, first_id + 1, ...
+};
+
 struct Scenario {
   std::string name;
   std::string description;
@@ -126,6 +140,7 @@ struct Scenario {
   ClutterSpec clutter;                       // background clutter
   std::vector<ClutterSpec> clutter_patches;  // extra Poisson regions, e.g. a dense patch
   std::vector<TargetSpec> targets;
+  std::optional<RandomTargetsSpec> random_targets;  // added to `targets` by the simulator
 };
 
 }  // namespace skytrack::sim
