@@ -65,6 +65,63 @@ TrackLifeSpec read_track_life(YamlSection s) {
   return t;
 }
 
+/// Where each clutter-area key was read: its sub-block `branching.clutter_area`, or the flat
+/// key of profiles written before it (config/README.md gives the mapping).
+struct ClutterAreaKeys {
+  struct Key {
+    YamlSection* section = nullptr;
+    const char* name = "";
+    bool given() const { return section->has(name); }
+    std::string path() const { return section->path() + "." + name; }
+  };
+  Key hold_last_motion, gate, held_accel_sigma, false_plots, coast_sons, coast_son_doubt,
+      coast_son_looks;
+};
+
+/// The keys that keep a track's number through looks missed in clutter (paper 003 §4.2),
+/// from `area` (branching.clutter_area) or their flat names in `s` (branching).
+ClutterAreaKeys read_clutter_area(YamlSection& s, YamlSection& area, BranchingSpec& b) {
+  const auto pick = [&](const char* key, const char* flat) {
+    if (s.has(flat)) {
+      if (area.has(key)) {
+        area.error(key, std::string("given twice: also as ") + s.path() + "." + flat +
+                            " (its name before clutter_area)");
+      }
+      return ClutterAreaKeys::Key{&s, flat};
+    }
+    return ClutterAreaKeys::Key{&area, key};
+  };
+  ClutterAreaKeys k;
+  k.false_plots = pick("false_plots", "last_motion_false_plots");
+  k.hold_last_motion = pick("hold_last_motion", "coast_on_last_motion");
+  k.gate = pick("gate", "non_manoeuvre_gate");
+  k.held_accel_sigma = pick("held_accel_sigma", "last_motion_accel_sigma");
+  k.coast_sons = pick("coast_sons", "coast_sons");
+  k.coast_son_doubt = pick("coast_son_doubt", "coast_son_doubt");
+  k.coast_son_looks = pick("coast_son_looks", "coast_son_looks");
+  k.false_plots.section->number(k.false_plots.name, b.last_motion_false_plots,
+                                Range::non_negative());
+  k.hold_last_motion.section->boolean(k.hold_last_motion.name, b.coast_on_last_motion);
+  read_enum(*k.gate.section, k.gate.name, b.non_manoeuvre_gate,
+            {NonManoeuvreGate::kUnion, NonManoeuvreGate::kLastMotion});
+  k.held_accel_sigma.section->number(k.held_accel_sigma.name, b.last_motion_accel_sigma,
+                                     Range{0.0, kMaxAccel});
+  k.coast_sons.section->integer(k.coast_sons.name, b.coast_sons, Range{0.0, 100.0});
+  k.coast_son_doubt.section->number(k.coast_son_doubt.name, b.coast_son_doubt, kOpenUnit);
+  k.coast_son_looks.section->integer(k.coast_son_looks.name, b.coast_son_looks, Range{0.0, 1000.0});
+  const bool flat_chain = s.has("detectability");
+  if (flat_chain && area.has("detectability")) {
+    area.error("detectability", "given twice: also as " + s.path() +
+                                    ".detectability (its place before clutter_area)");
+  }
+  YamlSection chain = flat_chain ? s.section("detectability") : area.section("detectability");
+  chain.number("hide", b.detectability.hide, Range::probability());
+  chain.number("reveal", b.detectability.reveal, Range::open_probability());
+  chain.finish();
+  area.finish();
+  return k;
+}
+
 BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingProfile& p) {
   BranchingSpec b;
   s.boolean("enabled", b.enabled);
@@ -78,20 +135,10 @@ BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingPro
   const bool names_ok = errors.messages().size() == before;
   s.number("manoeuvre_accel_sigma", b.manoeuvre_accel_sigma, Range{0.0, kMaxAccel, true});
   s.number("ambiguity_beta", b.ambiguity_beta, Range::open_probability());
-  s.boolean("coast_on_last_motion", b.coast_on_last_motion);
-  read_enum(s, "non_manoeuvre_gate", b.non_manoeuvre_gate,
-            {NonManoeuvreGate::kUnion, NonManoeuvreGate::kLastMotion});
-  s.number("last_motion_accel_sigma", b.last_motion_accel_sigma, Range{0.0, kMaxAccel});
-  s.number("last_motion_false_plots", b.last_motion_false_plots, Range::non_negative());
   read_enum(s, "confirmation", b.confirmation,
             {ConfirmationMethod::kMOfN, ConfirmationMethod::kExistence});
-  s.integer("coast_sons", b.coast_sons, Range{0.0, 100.0});
-  s.number("coast_son_doubt", b.coast_son_doubt, kOpenUnit);
-  s.integer("coast_son_looks", b.coast_son_looks, Range{0.0, 1000.0});
-  YamlSection chain = s.section("detectability");
-  chain.number("hide", b.detectability.hide, Range::probability());
-  chain.number("reveal", b.detectability.reveal, Range::open_probability());
-  chain.finish();
+  YamlSection clutter_area = s.section("clutter_area");
+  const ClutterAreaKeys area = read_clutter_area(s, clutter_area, b);
   s.integer("max_branches_per_father", b.max_branches_per_father, Range{1.0, 1e4});
   s.integer("max_total_branches", b.max_total_branches, Range{1.0, 1e5});
   s.finish();
@@ -99,17 +146,20 @@ BranchingSpec read_branching(YamlSection s, ErrorList& errors, const TrackingPro
   // The held last motion's options do nothing without it: set in the file with it off, they
   // are a mistake (taken from the defaults, they are simply inert).
   if (!b.coast_on_last_motion) {
-    const std::pair<const char*, bool> uses[] = {
-        {"non_manoeuvre_gate", b.non_manoeuvre_gate == NonManoeuvreGate::kLastMotion},
-        {"last_motion_accel_sigma", b.last_motion_accel_sigma > 0.0},
-        {"coast_sons", b.coast_sons > 0},
-        {"last_motion_false_plots", b.last_motion_false_plots > 0.0}};
+    const std::pair<const ClutterAreaKeys::Key*, bool> uses[] = {
+        {&area.gate, b.non_manoeuvre_gate == NonManoeuvreGate::kLastMotion},
+        {&area.held_accel_sigma, b.last_motion_accel_sigma > 0.0},
+        {&area.coast_sons, b.coast_sons > 0},
+        {&area.false_plots, b.last_motion_false_plots > 0.0}};
     for (const auto& [key, used] : uses) {
-      if (used && s.has(key)) s.error(key, "needs coast_on_last_motion: true");
+      if (used && key->given()) {
+        key->section->error(key->name, "needs " + area.hold_last_motion.path() + ": true");
+      }
     }
   }
-  if (b.coast_son_looks > 0 && b.coast_sons == 0 && s.has("coast_son_looks")) {
-    s.error("coast_son_looks", "needs coast_sons > 0");
+  if (b.coast_son_looks > 0 && b.coast_sons == 0 && area.coast_son_looks.given()) {
+    area.coast_son_looks.section->error(area.coast_son_looks.name,
+                                        "needs " + area.coast_sons.path() + " > 0");
   }
   // The manoeuvre gate is the wider of the two (paper 003 §1).
   if (b.manoeuvre_gate_probability < p.association.gate_probability) {

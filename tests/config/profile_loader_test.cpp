@@ -650,9 +650,10 @@ TEST(ProfileLoader, LastMotionGateNeedsCoastOnLastMotion) {
   ASSERT_TRUE(profile) << profile.error().message;
   EXPECT_EQ(profile->point.branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
   EXPECT_EQ(TrackingProfile{}.point.branching.non_manoeuvre_gate, NonManoeuvreGate::kLastMotion);
-  EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: false\n  non_manoeuvre_gate: "
-                       "last_motion\n"),
-              ::testing::HasSubstr("non_manoeuvre_gate: needs coast_on_last_motion: true"));
+  EXPECT_THAT(
+      error_of("branching:\n  coast_on_last_motion: false\n  non_manoeuvre_gate: "
+               "last_motion\n"),
+      ::testing::HasSubstr("non_manoeuvre_gate: needs branching.coast_on_last_motion: true"));
   EXPECT_THAT(error_of("branching:\n  non_manoeuvre_gate: cv\n"),
               ::testing::HasSubstr("branching.non_manoeuvre_gate"));
 }
@@ -668,10 +669,10 @@ TEST(ProfileLoader, CoastSonsAndTheHeldMotionsNoiseNeedCoastOnLastMotion) {
   EXPECT_EQ(TrackingProfile{}.point.branching.coast_sons, 5);
   EXPECT_DOUBLE_EQ(TrackingProfile{}.point.branching.last_motion_accel_sigma, 0.5);
   EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: false\n  coast_sons: 1\n"),
-              ::testing::HasSubstr("coast_sons: needs coast_on_last_motion: true"));
+              ::testing::HasSubstr("coast_sons: needs branching.coast_on_last_motion: true"));
   EXPECT_THAT(
       error_of("branching:\n  coast_on_last_motion: false\n  last_motion_accel_sigma: 0.5\n"),
-      ::testing::HasSubstr("needs coast_on_last_motion: true"));
+      ::testing::HasSubstr("needs branching.coast_on_last_motion: true"));
   EXPECT_THAT(error_of("branching:\n  coast_sons: -1\n"),
               ::testing::HasSubstr("branching.coast_sons"));
   EXPECT_THAT(error_of("branching:\n  coast_son_doubt: 0\n"),
@@ -703,12 +704,41 @@ TEST(ProfileLoader, CoastSonWindowAndClutterAreaLastMotionNeedTheirOptions) {
   EXPECT_EQ(TrackingProfile{}.point.branching.coast_son_looks, 8);
   EXPECT_DOUBLE_EQ(TrackingProfile{}.point.branching.last_motion_false_plots, 0.3);
   EXPECT_THAT(error_of("branching:\n  coast_sons: 0\n  coast_son_looks: 6\n"),
-              ::testing::HasSubstr("coast_son_looks: needs coast_sons > 0"));
-  EXPECT_THAT(error_of("branching:\n  coast_on_last_motion: false\n"
-                       "  last_motion_false_plots: 0.3\n"),
-              ::testing::HasSubstr("last_motion_false_plots: needs coast_on_last_motion"));
+              ::testing::HasSubstr("coast_son_looks: needs branching.coast_sons > 0"));
+  EXPECT_THAT(
+      error_of("branching:\n  coast_on_last_motion: false\n"
+               "  last_motion_false_plots: 0.3\n"),
+      ::testing::HasSubstr("last_motion_false_plots: needs branching.coast_on_last_motion"));
   EXPECT_THAT(error_of("branching:\n  last_motion_false_plots: -1\n"),
               ::testing::HasSubstr("branching.last_motion_false_plots"));
+}
+
+TEST(ProfileLoader, ClutterAreaKeysReadFromTheirSubBlockOrTheirFlatNames) {
+  // The sub-block and the flat keys of profiles written before it give the same spec.
+  const auto block = with_branching(
+      "clutter_area: {false_plots: 0.2, hold_last_motion: true, gate: union, "
+      "held_accel_sigma: 0.7, coast_sons: 2, coast_son_doubt: 0.3, coast_son_looks: 4, "
+      "detectability: {hide: 0.1, reveal: 0.4}}");
+  const auto flat = with_branching(
+      "last_motion_false_plots: 0.2, coast_on_last_motion: true, non_manoeuvre_gate: union, "
+      "last_motion_accel_sigma: 0.7, coast_sons: 2, coast_son_doubt: 0.3, coast_son_looks: 4, "
+      "detectability: {hide: 0.1, reveal: 0.4}");
+  ASSERT_TRUE(block) << block.error().message;
+  ASSERT_TRUE(flat) << flat.error().message;
+  EXPECT_EQ(block->point.branching, flat->point.branching);
+  EXPECT_DOUBLE_EQ(block->point.branching.last_motion_false_plots, 0.2);
+  EXPECT_EQ(block->point.branching.non_manoeuvre_gate, NonManoeuvreGate::kUnion);
+  EXPECT_DOUBLE_EQ(block->point.branching.detectability.reveal, 0.4);
+  // Both forms of one key, a dependency and an unknown key, each named with its path.
+  EXPECT_THAT(error_of("branching:\n  coast_sons: 2\n  clutter_area: {coast_sons: 3}\n"),
+              ::testing::HasSubstr("branching.clutter_area.coast_sons: given twice: also as "
+                                   "branching.coast_sons"));
+  EXPECT_THAT(error_of("branching:\n  clutter_area: {hold_last_motion: false, gate: "
+                       "last_motion}\n"),
+              ::testing::HasSubstr("branching.clutter_area.gate: needs "
+                                   "branching.clutter_area.hold_last_motion: true"));
+  EXPECT_THAT(error_of("branching:\n  clutter_area: {coast_son: 1}\n"),
+              ::testing::HasSubstr("branching.clutter_area.coast_son"));
 }
 
 TEST(ProfileLoader, BranchConfirmationIsMOfNOrExistence) {
