@@ -177,6 +177,59 @@ void weighted_moments(std::span<const Particle> particles, std::span<const doubl
   mean = m + Eigen::Vector4d(r.x, r.vx, r.y, r.vy);
 }
 
+void MomentAccumulator::add(const Particle& p) noexcept {
+  const Eigen::Vector4d v(p.x, p.vx, p.y, p.vy);
+  if (count_ == 0) {
+    reference_ = v;
+    sum_.setZero();
+    square_sum_.setZero();
+  }
+  const Eigen::Vector4d d = v - reference_;
+  sum_ += d;
+  square_sum_.noalias() += d * d.transpose();
+  ++count_;
+}
+
+void MomentAccumulator::moments(Eigen::Vector4d& mean, Eigen::Matrix4d& covariance) const noexcept {
+  mean.setZero();
+  covariance.setZero();
+  if (count_ == 0) return;
+  const double n = static_cast<double>(count_);
+  const Eigen::Vector4d m = sum_ / n;
+  covariance = square_sum_ / n - m * m.transpose();
+  mean = m + reference_;
+}
+
+void predict_moments(const ModelDynamics& d, Eigen::Vector4d& mean,
+                     Eigen::Matrix4d& covariance) noexcept {
+  Eigen::Matrix4d f;                                 // propagate's x' = F x, state [x, vx, y, vy]
+  f << 1.0, d.s_over_w, 0.0, -d.one_minus_c_over_w,  //
+      0.0, d.c, 0.0, -d.s,                           //
+      0.0, d.one_minus_c_over_w, 1.0, d.s_over_w,    //
+      0.0, d.s, 0.0, d.c;
+  Eigen::Matrix4d q = Eigen::Matrix4d::Zero();  // G G' sigma^2 per axis
+  q(0, 0) = q(2, 2) = d.g_position * d.g_position;
+  q(1, 1) = q(3, 3) = d.g_velocity * d.g_velocity;
+  q(0, 1) = q(1, 0) = q(2, 3) = q(3, 2) = d.g_position * d.g_velocity;
+  mean = f * mean;
+  covariance = f * covariance * f.transpose() + q;
+}
+
+bool velocity_given_position(const Eigen::Vector4d& predicted_mean,
+                             const Eigen::Matrix4d& predicted_covariance, double x, double y,
+                             double& vx, double& vy) noexcept {
+  const Eigen::Matrix4d& c = predicted_covariance;
+  const double pxx = c(0, 0), pxy = c(0, 2), pyy = c(2, 2);
+  const double det = pxx * pyy - pxy * pxy;
+  if (!(pxx > 0.0) || !(det > 0.0) || !std::isfinite(det)) return false;
+  const double dx = x - predicted_mean[0], dy = y - predicted_mean[2];
+  // P_pp^-1 (p - m_p), then P_vp times it.
+  const double ux = (pyy * dx - pxy * dy) / det, uy = (pxx * dy - pxy * dx) / det;
+  vx = predicted_mean[1] + c(1, 0) * ux + c(1, 2) * uy;
+  vy = predicted_mean[3] + c(3, 0) * ux + c(3, 2) * uy;
+  return std::isfinite(vx) && std::isfinite(vy);
+}
+
 bool regularise_velocity(std::span<Particle> cloud, const Eigen::Vector4d& mean,
                          const Eigen::Matrix4d& covariance, double bandwidth,
                          double prediction_velocity_variance, NormalSampler& rng) noexcept {

@@ -8,7 +8,8 @@
 // scan's plots (eq. 22-23), weighted by l(x) (eq. 16, 26) and resampled back to its fixed
 // count (then regularised in velocity when its few lineages after a birth need it, see
 // regularise_velocity); the model probabilities come from each model's likelihood 1 - Delta (eq.
-// 17), and the output is the model-probability-weighted estimate (eq. 28). 2-D: state [x, vx, y,
+// 17), and the output is the model-probability-weighted estimate (eq. 28), each model's velocity
+// conditioned on its posterior mean position (velocity_given_position). 2-D: state [x, vx, y,
 // vy] in the local ENU tracking frame. Deterministic for a seed.
 #include <array>
 #include <span>
@@ -53,6 +54,11 @@ class MmBernoulliFilter {
                             const std::array<double, kMaxModels>& mu_predicted,
                             const ModelDynamics& dynamics) noexcept;
   double likelihood_integral(int j, std::size_t survivors, std::size_t count) noexcept;
+  /// Model j's state estimate x_j of eq. 28 from its weighted cloud (`mean` its weighted
+  /// mean): the survivors' velocity conditioned on their posterior mean position.
+  Eigen::Vector4d model_estimate(int j, std::span<const Particle> cloud,
+                                 std::span<const double> weights,
+                                 const Eigen::Vector4d& mean) const noexcept;
   /// Eq. 26-28 and step 3(3): weights times l(x), model moments, resampling to N_j, output.
   void update_and_resample(const std::array<std::size_t, kMaxModels>& count, double dt,
                            BernoulliEstimate& estimate) noexcept;
@@ -67,6 +73,12 @@ class MmBernoulliFilter {
   std::array<std::vector<double>, kMaxModels> weight_;
   std::array<std::vector<double>, kMaxModels> ratio_;  // sum_z g / kappa per particle
   std::array<double, kMaxModels> mu_{};                // mu_{k-1}
+  // Per model this scan: its survivors' count and their predicted moments, exact from the
+  // parents (the mixed particles before propagation) and the model's noise.
+  std::array<std::size_t, kMaxModels> survivors_{};
+  std::array<Eigen::Vector4d, kMaxModels> predicted_mean_{};
+  std::array<Eigen::Matrix4d, kMaxModels> predicted_covariance_{};
+  MomentAccumulator parents_;
   double q_ = 0.0;
   bool has_posterior_ = false;
   ScanBook book_{1};

@@ -134,6 +134,37 @@ double effective_sample_size(std::span<const double> weights) noexcept;
 /// h = (4 / ((d + 2) n))^(1 / (d + 4)) (Silverman 1986, eq. 4.14; Musso et al. 2001).
 double optimal_kernel_bandwidth(double samples) noexcept;
 
+/// Equal-weight mean and covariance [x, vx, y, vy] of particles added one at a time (sums
+/// about the first particle, so they stay small: positions are ~1e4 m).
+class MomentAccumulator {
+ public:
+  void clear() noexcept { count_ = 0; }
+  void add(const Particle& p) noexcept;
+  std::size_t count() const noexcept { return count_; }
+  /// Zero mean and covariance when nothing was added.
+  void moments(Eigen::Vector4d& mean, Eigen::Matrix4d& covariance) const noexcept;
+
+ private:
+  std::size_t count_ = 0;
+  Eigen::Vector4d reference_ = Eigen::Vector4d::Zero(), sum_ = Eigen::Vector4d::Zero();
+  Eigen::Matrix4d square_sum_ = Eigen::Matrix4d::Zero();
+};
+
+/// The moments a cloud of parents with `mean` and `covariance` has after `propagate` by
+/// `dynamics`, exactly: F m and F P F' + G G' sigma^2 (the noise's own moments, not draws).
+void predict_moments(const ModelDynamics& dynamics, Eigen::Vector4d& mean,
+                     Eigen::Matrix4d& covariance) noexcept;
+
+/// The posterior mean velocity of particles predicted with `predicted_mean` and
+/// `predicted_covariance` whose posterior mean position is (x, y), by conditioning on the
+/// position: the likelihood depends on the position only, so E[v|Z] = E[E[v|p] | Z], and
+/// under the (Gaussian) predicted density E[v|p] = m_v + P_vp P_pp^-1 (p - m_p) is linear,
+/// so E[v|Z] = m_v + P_vp P_pp^-1 (E[p|Z] - m_p). Returns false (velocity untouched) when
+/// P_pp is not positive definite.
+bool velocity_given_position(const Eigen::Vector4d& predicted_mean,
+                             const Eigen::Matrix4d& predicted_covariance, double x, double y,
+                             double& vx, double& vy) noexcept;
+
 /// Weighted mean and covariance [x, vx, y, vy] of particles with weights summing to 1.
 void weighted_moments(std::span<const Particle> particles, std::span<const double> weights,
                       Eigen::Vector4d& mean, Eigen::Matrix4d& covariance) noexcept;
