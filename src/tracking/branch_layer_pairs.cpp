@@ -130,7 +130,7 @@ void BranchLayer::update_father(int t, std::span<const int> candidates,
   PointTrack& father = store()[t];
   const bool firm = is_reported_as_firm(father.life.status);
   // A firm father its life deletes is suspended, not deleted: no "deleted" event.
-  look_->updater.update_track(*look_, t, candidates, beta_plots, beta_miss, this,
+  look_->updater.update_track(*look_, t, candidates, beta_plots, beta_miss, *this,
                               /*reports_deletion=*/!firm);
   if (!firm || father.life.status != TrackStatus::kDeleted) return;
   // Deleted by its life: it lives on, coasting, while branches may replace it.

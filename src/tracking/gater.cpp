@@ -32,7 +32,7 @@ Gater::Gater(const config::TrackingProfile& profile, int dims)
 }
 
 void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrack>& tracks,
-                 const ImmFilter& filter, double batch_mid, double half_span, BranchHooks* hook) {
+                 const ImmFilter& filter, double batch_mid, double half_span, BranchHooks& hooks) {
   candidates_.clear();
   gated_.assign(pre.plots().size(), 0);
   batch_mid_ = batch_mid;
@@ -67,9 +67,8 @@ void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrac
     covered_[t] =
         covers(scan, centre) && pre.sweep() - track.looked_by(pre.sensor()) > std::numbers::pi ? 1
                                                                                                : 0;
-    const bool non_manoeuvre =
-        hook == nullptr || hook->at_mid_batch(static_cast<int>(t), covered_[t] != 0, mid,
-                                              std::max(batch_mid, estimate.time));
+    const bool non_manoeuvre = hooks.at_mid_batch(static_cast<int>(t), covered_[t] != 0, mid,
+                                                  std::max(batch_mid, estimate.time));
     // Search radius: the widest gate in the most uncertain direction, plus the motion over
     // half the batch's time span. The exact gate test is per plot, in measurement space.
     const double radius = search_radius(mid, centre, widest, scan);
@@ -86,9 +85,7 @@ void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrac
     predicted_[t] =
         filter.predict(estimate, std::max(nearest_time(pre, neighbours_, centre), estimate.time));
     if (!non_manoeuvre) continue;
-    if (hook != nullptr) {
-      hook->narrow(static_cast<int>(t), predicted_[t], neighbours_, clutter_area_[t]);
-    }
+    hooks.narrow(static_cast<int>(t), predicted_[t], neighbours_, clutter_area_[t]);
     for (const int j : neighbours_) {
       PlotHypothesis hypothesis = filter.hypothesise(predicted_[t], pre.plots()[j]);
       if (!hypothesis.usable) continue;

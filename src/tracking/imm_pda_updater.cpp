@@ -57,7 +57,7 @@ PlotRatios ImmPdaUpdater::update(PointLook& look, int t, std::vector<Candidate>&
 
 void ImmPdaUpdater::update_track(PointLook& look, int t, std::span<const int> candidates,
                                  std::span<const double> beta_plots, double beta_miss,
-                                 BranchHooks* hooks, bool reports_deletion) {
+                                 BranchHooks& hooks, bool reports_deletion) {
   PointTrack& track = look.store[static_cast<std::size_t>(t)];
   const auto slot = static_cast<std::size_t>(t);
   if (!look.gater.covered(slot) && candidates.empty()) return;  // neither updated nor aged
@@ -66,7 +66,7 @@ void ImmPdaUpdater::update_track(PointLook& look, int t, std::span<const int> ca
   const bool valid = valid_association(beta_plots, beta_miss);
   const PlotRatios ratios =
       update(look, t, look.gater.candidates(), candidates, beta_plots, beta_miss, track.id);
-  if (hooks != nullptr && !candidates.empty()) hooks->updated(track, valid);
+  if (!candidates.empty()) hooks.updated(track, valid);
   const double detection = 1.0 - beta_miss;
   track.quality = 0.8 * track.quality + 0.2 * detection;
   // P_D on its detectability chain, as in its support: a target masked in a clutter area
@@ -78,12 +78,12 @@ void ImmPdaUpdater::update_track(PointLook& look, int t, std::span<const int> ca
       profile.association.gate_probability, profile.point.track_life);
   add_support(profile, track.life, ratios.best, ratios.sum, clutter_area);
   bool detected = detection > 0.5;
-  if (hooks != nullptr) detected = hooks->detected(t, valid, detected);
+  detected = hooks.detected(t, valid, detected);
   const LifeChange change = advance_life(
       track.life, detected, mode_spread(track.estimate, kLifeSpreadDims), profile.point.track_life);
   if (change.confirmed) {
     add_event(look.events, TrackEventType::kConfirmed, track.id, "");
-    if (hooks != nullptr) hooks->confirmed(t);
+    hooks.confirmed(t);
   }
   if (change.started_coasting) add_event(look.events, TrackEventType::kCoasting, track.id, "");
   if (change.deleted && reports_deletion) {

@@ -62,11 +62,8 @@ void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame&
                  .events = events_,
                  .used_by_branch = used_by_branch_,
                  .held = held_};
-  BranchHooks* hooks = nullptr;
-  if (branches_) {
-    branches_->begin(look);
-    hooks = &*branches_;
-  }
+  BranchHooks& hooks = this->hooks();
+  hooks.begin(look);
 
   auto start = Clock::now();
   const std::size_t n = pre.plots().size();
@@ -77,7 +74,7 @@ void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame&
     t_min = std::min(t_min, p.time);
     t_max = std::max(t_max, p.time);
   }
-  if (branches_) branches_->before_gating();
+  hooks.before_gating();
   gater_.gate(scan, pre, store_.all(), filter_, 0.5 * (t_min + t_max), 0.5 * (t_max - t_min),
               hooks);
   report.predict += since(start);
@@ -93,13 +90,13 @@ void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame&
 
   start = Clock::now();
   initiate(look);
-  if (branches_) branches_->after_initiation();
+  hooks.after_initiation();
   // Every event of the look is decided: emitted, in the order they were made.
   frame.events.insert(frame.events.end(), std::make_move_iterator(events_.begin()),
                       std::make_move_iterator(events_.end()));
   events_.clear();
   store_.number_confirmed(frame, renamed_);
-  if (branches_) branches_->renamed(renamed_);
+  hooks.renamed(renamed_);
   // The tracks this look saw (aged or updated, or started or branched in it).
   for (std::size_t t = 0; t < store_.size(); ++t) {
     if (gater_.covered(t) || gater_.took_candidates(t)) {
@@ -109,7 +106,7 @@ void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame&
   TrackReporter::report(store_.all(), filter_, scan.time, report, frame);
   store_.erase_deleted();
   report.numeric_failures += look.numeric_failures;
-  if (branches_) branches_->end();
+  hooks.end();
   report.manage = since(start);
 }
 

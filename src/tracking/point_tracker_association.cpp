@@ -41,7 +41,7 @@ void PointTracker::associate_and_update(PointLook& look) {
       look.association(), candidates, kind_list_, profile_.association.gate_probability,
       [&](int t, std::span<const int> mine, std::span<const double> beta, double miss) {
         note_explained(look, candidates, mine, beta);
-        updater_.update_track(look, t, mine, beta, miss, nullptr);
+        updater_.update_track(look, t, mine, beta, miss, hooks());
       });
 }
 

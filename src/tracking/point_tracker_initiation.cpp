@@ -111,7 +111,7 @@ void PointTracker::initiate(PointLook& look) {
                   std::to_string(static_cast<int>(kCloudSigmas)) + " position sigmas)");
   }
   const auto covered = [&](const Eigen::Vector3d& p) { return Gater::covers(scan, p); };
-  if (branches_) branches_->before_initiation(scan, report);
+  hooks().before_initiation(scan, report);
   int tentative =
       static_cast<int>(std::count_if(store_.all().begin(), store_.all().end(), [](const auto& t) {
         return t.branch == BranchType::kFather && t.life.status == TrackStatus::kTentative;
@@ -119,7 +119,7 @@ void PointTracker::initiate(PointLook& look) {
   int refused = 0;
   for (const Initiation& initiation :
        initiator_.step(batches_, scan.time, pre.sensor(), pre.sweep(), unused, covered)) {
-    if (branches_ && branches_->take_chain(initiation, report, frame)) continue;
+    if (hooks().take_chain(initiation, report, frame)) continue;
     if (tentative >= profile_.point.initiation.max_tentative) {
       ++refused;
       continue;
@@ -139,7 +139,7 @@ void PointTracker::initiate(PointLook& look) {
     const PlotMeasurement& last = initiation.plots.back();
     add_association(frame, track.id, last.plot_id, last.scan, 1.0);
     const int t = store_.add(std::move(track));
-    if (branches_) branches_->father_started(t, initiation);
+    hooks().father_started(t, initiation);
     ++report.initiated;
   }
   if (refused > 0) {

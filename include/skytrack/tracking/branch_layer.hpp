@@ -4,18 +4,12 @@
 // grandsons, with a second, wider manoeuvre gate per track, pairs of five kinds with their
 // own JPDA probabilities, their ordered confirmation (branch_association.hpp) and the tree
 // rules (branch_tree.hpp). The point tracker owns one when the profile's branching is on and
-// calls it at a few hooks of a look:
-//   begin / end          the look's parts (point_look.hpp), held for the hooks between them
-//   before_gating        the manoeuvre gates' priors, undecided fathers back to active
-//   BranchHooks          per track while gating (suspension, last motion) and at a father's
-//                        update and life step (branch_hooks.hpp)
-//   associate            replaces the plain association: the five pair kinds, the fathers'
-//                        non-manoeuvre kind being exactly the plain IMM-JPDA update
-//   before_initiation, take_chain, father_started   §3.3's lost fathers and plot chains
-//   after_initiation     the doomed fathers with no branch left are deleted
-//   renamed              fathers numbered on confirmation keep their tree nodes
-// Files: branch_layer.cpp (creation, hooks, the pair kinds), _last_motion, _pairs, _changes,
-// _lost_fathers.
+// calls it, as its BranchHooks (branch_hooks.hpp, docs/point-tracker.md "Components"), at a
+// few points of a look: before gating, per track in the gater and in a father's update,
+// instead of the plain association (associate), round initiation (§3.3's lost fathers) and
+// when fathers are numbered. Between begin and end it holds the look's parts (point_look.hpp).
+// Files: branch_layer.cpp (creation, hooks), _kinds (the pair kinds and their JPDA), _pairs,
+// _changes, _lost_fathers, _last_motion.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -51,24 +45,25 @@ class BranchLayer final : public BranchHooks {
   static Expected<std::optional<BranchLayer>> create(const config::TrackingProfile& profile,
                                                      const ImmFilter& main, int dims);
 
-  void begin(PointLook& look) { look_ = &look; }
-  void end() { look_ = nullptr; }
-  void before_gating();
+  // BranchHooks: a look.
+  void begin(PointLook& look) override { look_ = &look; }
+  void before_gating() override;
   void associate(const PlotScan& scan, ScanReport& report, TrackFrame& frame);
   /// Collects the suspended fathers that may still branch and continues them with the
   /// fathers confirmed in this look in their manoeuvre gates (§3.3).
-  void before_initiation(const PlotScan& scan, ScanReport& report);
+  void before_initiation(const PlotScan& scan, ScanReport& report) override;
   /// A chain that ends in a suspended father's manoeuvre gate starts as its son: true when
   /// it did (the caps may leave no room; it then starts a new father).
-  bool take_chain(const Initiation& initiation, ScanReport& report, TrackFrame& frame);
+  bool take_chain(const Initiation& initiation, ScanReport& report, TrackFrame& frame) override;
   /// Track t is a new father started from `initiation`.
-  void father_started(int t, const Initiation& initiation);
+  void father_started(int t, const Initiation& initiation) override;
   /// Deletes the doomed fathers that have no branch left and may start no more sons.
-  void after_initiation();
-  void renamed(std::span<const std::pair<std::int64_t, std::int64_t>> renamed);
+  void after_initiation() override;
+  void renamed(std::span<const std::pair<std::int64_t, std::int64_t>> renamed) override;
+  void end() override { look_ = nullptr; }
   const BranchTree& tree() const { return tree_; }
 
-  // BranchHooks.
+  // BranchHooks: per track.
   bool at_mid_batch(int t, bool covered, const Gaussian& mid, double time) override;
   void narrow(int t, ImmEstimate& predicted, std::span<const int> neighbours,
               std::uint8_t& clutter_area) override;

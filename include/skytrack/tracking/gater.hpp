@@ -37,7 +37,7 @@ class Gater {
   /// Gates every track's candidates among the look's plots. The look's plot times span
   /// batch_mid -+ half_span.
   void gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrack>& tracks,
-            const ImmFilter& filter, double batch_mid, double half_span, BranchHooks* hook);
+            const ImmFilter& filter, double batch_mid, double half_span, BranchHooks& hooks);
 
   // The look's gating.
   std::vector<Candidate>& candidates() { return candidates_; }

@@ -33,10 +33,10 @@ class ImmPdaUpdater {
                     double beta_miss, std::int64_t number);
 
   /// A track's update and life step in the look (unless the look neither covers it nor gave
-  /// it a candidate). `hooks`: the branch layer's, for a father. reports_deletion false: the
-  /// caller turns a deletion into a suspension.
+  /// it a candidate). `hooks`: the branch layer's for a father (branch_hooks.hpp).
+  /// reports_deletion false: the caller turns a deletion into a suspension.
   void update_track(PointLook& look, int t, std::span<const int> candidates,
-                    std::span<const double> beta_plots, double beta_miss, BranchHooks* hooks,
+                    std::span<const double> beta_plots, double beta_miss, BranchHooks& hooks,
                     bool reports_deletion = true);
 
  private:

@@ -12,8 +12,8 @@
 //   Initiator          plot chains from the plots no track explains (initiator.hpp)
 //   TrackReporter      the reported tracks at the look's time
 //   BranchLayer        with branching on (paper 003 §1-§2.3): sons and grandsons, called at
-//                      a few hooks of a look (branch_layer.hpp); absent with branching off,
-//                      when the tracker is plain IMM-JPDA.
+//                      a few hooks of a look (branch_hooks.hpp, branch_layer.hpp); with
+//                      branching off the hooks' base class answers as plain IMM-JPDA.
 // Files: point_tracker.cpp (creation, a look's steps), _association (clutter rejection, the
 // plain association), _initiation.
 #include <cstdint>
@@ -76,6 +76,8 @@ class PointTracker final : public Estimator {
   /// True when plot j may feed the initiator: in no gate, or in gates but unexplained.
   bool free_for_initiation(const PointLook& look, std::size_t j) const;
   void initiate(PointLook& look);
+  /// The branch layer, or with branching off the hooks that answer as the plain tracker.
+  BranchHooks& hooks() { return branches_ ? static_cast<BranchHooks&>(*branches_) : plain_; }
 
   config::TrackingProfile profile_;
   ImmFilter filter_;
@@ -85,6 +87,7 @@ class PointTracker final : public Estimator {
   ImmPdaUpdater updater_;
   Initiator initiator_;
   std::optional<BranchLayer> branches_;  // branching on
+  BranchHooks plain_;                    // branching off: the plain tracker's answers
   std::uint64_t batches_ = 0;
 
   // Per-look workspaces (reused).
