@@ -10,8 +10,6 @@ namespace skytrack {
 
 using namespace tracking_detail;
 
-ImmPdaUpdater::ImmPdaUpdater(const config::TrackingProfile&) {}
-
 PlotRatios ImmPdaUpdater::update(PointLook& look, int t, std::vector<Candidate>& pool,
                                  std::span<const int> candidates,
                                  std::span<const double> beta_plots, double beta_miss,

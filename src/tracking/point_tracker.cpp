@@ -34,7 +34,6 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, ImmFilter fil
       filter_(std::move(filter)),
       gater_(profile, filter_.layout().dims),
       associator_(profile),
-      updater_(profile),
       initiator_(profile.point.initiation, filter_.layout().dims),
       branches_(std::move(branches)) {}
 

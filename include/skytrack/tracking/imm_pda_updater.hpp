@@ -6,7 +6,6 @@
 #include <span>
 #include <vector>
 
-#include "skytrack/config/profile.hpp"
 #include "skytrack/filter/imm_filter.hpp"
 #include "skytrack/tracking/branch_hooks.hpp"
 #include "skytrack/tracking/gater.hpp"
@@ -23,8 +22,6 @@ struct PlotRatios {
 
 class ImmPdaUpdater {
  public:
-  explicit ImmPdaUpdater(const config::TrackingProfile& profile);
-
   /// IMM-PDA update of track t from its prediction with its weighted candidates from
   /// `pool` (no candidate: predicted to the frame's time); reports the associations under
   /// `number`.
