@@ -81,7 +81,7 @@ inline int looks_between(double sweep_a, double sweep_b) {
   return static_cast<int>(std::lround(std::abs(sweep_b - sweep_a) / (2.0 * 3.141592653589793)));
 }
 
-/// Holds an event of this batch until the batch has decided it (PointTracker::events_).
+/// Holds an event of this look until the look has decided it (PointLook::events).
 inline void add_event(std::vector<TrackEvent>& held, TrackEventType type, std::int64_t track,
                       std::string detail) {
   held.push_back({type, track, std::move(detail), {}});

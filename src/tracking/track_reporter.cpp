@@ -1,28 +1,26 @@
-// The point tracker's report: every reported track at the batch's time, into the frame.
-#include "skytrack/tracking/point_tracker.hpp"
-
-#include <algorithm>
-#include <cmath>
-#include <iterator>
-#include <limits>
-#include <numbers>
-#include <utility>
-
-#include <Eigen/Eigenvalues>
+#include "skytrack/tracking/track_reporter.hpp"
 
 #include "point_tracker_support.hpp"
-#include "skytrack/core/chi_square.hpp"
-#include "skytrack/geometry/frames.hpp"
 
 namespace skytrack {
 
 using namespace tracking_detail;
 
-void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& frame) {
-  const int dims = layout_.dims;
+void TrackReporter::start_frame(const PlotScan& scan, TrackFrame& frame) {
+  frame.sensor = scan.sensor;
+  frame.scan = scan.scan;
+  frame.time = scan.time;
+  // frame.tracks keeps its elements (and their storage) for report to overwrite.
+  frame.associations.clear();
+  frame.events.clear();
+}
+
+void TrackReporter::report(const std::vector<PointTrack>& tracks, const ImmFilter& filter,
+                           double time, ScanReport& report, TrackFrame& frame) {
+  const int dims = filter.layout().dims;
   const int n = 2 * dims;
   std::size_t reported = 0;
-  for (const PointTrack& track : tracks_) {
+  for (const PointTrack& track : tracks) {
     if (track.branch != BranchType::kFather) {  // sons and grandsons are internal
       if (track.life.status != TrackStatus::kDeleted) ++report.point.branches;
       continue;
@@ -33,8 +31,8 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
     if (track.doomed() && !track.undecided() && track.life.status != TrackStatus::kDeleted)
       continue;
     const ImmEstimate at_time =
-        track.estimate.time < time ? filter_.predict(track.estimate, time) : track.estimate;
-    const Gaussian g = filter_.combine(at_time);
+        track.estimate.time < time ? filter.predict(track.estimate, time) : track.estimate;
+    const Gaussian g = filter.combine(at_time);
     // Written over the frame's earlier report in this place: its vectors keep their storage.
     TrackReport& out =
         reported < frame.tracks.size() ? frame.tracks[reported] : frame.tracks.emplace_back();
@@ -53,7 +51,7 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
       for (int c = 0; c < n; ++c)
         out.covariance[static_cast<std::size_t>(r * n + c)] = g.covariance(r, c);
     }
-    const auto& names = filter_.names();
+    const auto& names = filter.names();
     for (std::size_t m = 0; m < names.size(); ++m) {
       out.modes.emplace_back(names[m], at_time.probabilities[static_cast<Eigen::Index>(m)]);
     }
@@ -74,13 +72,6 @@ void PointTracker::report_tracks(double time, ScanReport& report, TrackFrame& fr
     }
   }
   frame.tracks.resize(reported);
-  // Deleted tracks are reported once, in the batch that deletes them.
-  std::erase_if(tracks_,
-                [](const PointTrack& t) { return t.life.status == TrackStatus::kDeleted; });
-  if (branching()) {
-    slots_.clear();
-    for (std::size_t i = 0; i < tracks_.size(); ++i) slots_[tracks_[i].id] = static_cast<int>(i);
-  }
 }
 
 }  // namespace skytrack

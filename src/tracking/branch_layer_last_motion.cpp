@@ -1,0 +1,62 @@
+// The branch layer's last motion (branching.coast_on_last_motion, paper 003 §1 and §4.2): a
+// firm father that missed coasts and gates on the motion it was last seen in, where its
+// last motion's gate expects false plots (a clutter area); its sons follow a turn.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "point_look.hpp"
+#include "point_tracker_support.hpp"
+#include "skytrack/tracking/branch_layer.hpp"
+
+namespace skytrack {
+
+using namespace tracking_detail;
+
+bool BranchLayer::starts_from_coast(const PointTrack& track) const {
+  return holds_last_motion() && track.branch == BranchType::kFather &&
+         track.life.consecutive_misses >= 1 && track.last_detected && track.coasted;
+}
+
+void BranchLayer::hold_last_motion(PointTrack& track) const {
+  const std::optional<ImmEstimate> coast = last_motion(track, track.estimate.time, true);
+  if (!coast) return;
+  track.coasted = track.life.consecutive_misses >= 1 && track.coasted
+                      ? filter().predict(*track.coasted, track.estimate.time)
+                      : track.estimate;
+  track.estimate = *coast;
+}
+
+bool BranchLayer::in_dense_clutter(const Innovation& last_motion, int plot) const {
+  // Gate volume c_d g^(d/2) sqrt|S| = gate_volume_per_peak_ / N(0; 0, S), the peak density
+  // from log N(nu; 0, S) and the NIS (c_d = pi^(d/2) / Gamma(d/2 + 1)).
+  const double volume = gater().volume_per_peak(pre().plots()[plot].model.size()) *
+                        std::exp(-last_motion.log_likelihood - 0.5 * last_motion.nis);
+  return pre().density(pre().plots()[plot], plot) * volume >=
+         profile_.point.branching.last_motion_false_plots;
+}
+
+std::optional<ImmEstimate> BranchLayer::last_motion(const PointTrack& track, double time,
+                                                    bool missing_now) const {
+  // A coast son always holds its father's last motion (branching.coast_sons).
+  const bool firm_father =
+      track.branch == BranchType::kFather && is_reported_as_firm(track.life.status);
+  if (!holds_last_motion() || !track.last_detected || !(firm_father || track.coast_son()) ||
+      (!track.coast_son() && track.life.consecutive_misses < 1 && !missing_now &&
+       profile_.point.branching.non_manoeuvre_gate != config::NonManoeuvreGate::kLastMotion)) {
+    return std::nullopt;
+  }
+  // The likeliest mode at the last detection, predicted alone: IMM mixing would blend in the
+  // other modes' diverging predictions.
+  ImmEstimate one = *track.last_detected;
+  Eigen::Index kept = 0;
+  one.probabilities.maxCoeff(&kept);
+  for (Gaussian& m : one.modes) m = one.modes[static_cast<std::size_t>(kept)];
+  one.probabilities.setZero();
+  one.probabilities[kept] = 1.0;
+  ImmEstimate predicted = (hold_ ? *hold_ : filter()).predict(one, std::max(time, one.time));
+  for (Gaussian& m : predicted.modes) m = predicted.modes[static_cast<std::size_t>(kept)];
+  return predicted;
+}
+
+}  // namespace skytrack

@@ -1,0 +1,64 @@
+#pragma once
+// One look of the point tracker as its components see it: the tracker's parts and the look's
+// plots, outputs and per-plot marks (built by PointTracker::process; not installed).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "skytrack/config/profile.hpp"
+#include "skytrack/core/look.hpp"
+#include "skytrack/core/scan_report.hpp"
+#include "skytrack/core/track_report.hpp"
+#include "skytrack/filter/imm_filter.hpp"
+#include "skytrack/preprocess/preprocessing.hpp"
+#include "skytrack/tracking/cluster_associator.hpp"
+#include "skytrack/tracking/gater.hpp"
+#include "skytrack/tracking/imm_pda_updater.hpp"
+#include "skytrack/tracking/initiator.hpp"
+#include "skytrack/tracking/track_store.hpp"
+
+namespace skytrack {
+
+struct PointLook {
+  const config::TrackingProfile& profile;
+  const ImmFilter& filter;
+  TrackStore& store;
+  Gater& gater;
+  ClusterAssociator& associator;
+  ImmPdaUpdater& updater;
+  const PlotScan& scan;
+  Preprocessing& pre;
+  TrackFrame& frame;
+  ScanReport& report;
+  std::uint64_t batch = 0;  // looks processed, this one included
+  // This look's events, held until it has decided them all (process emits them into the
+  // frame): a later decision may supersede one, which then never appears.
+  std::vector<TrackEvent>& events;
+  // Per plot: taken by a confirmed branch pair (branching); held by a non-manoeuvre gate,
+  // i.e. the most likely plot of a track that explains it, or any plot of a track that
+  // explains none (initiation.gated_seed_beta).
+  std::vector<std::uint8_t>& used_by_branch;
+  std::vector<std::uint8_t>& held;
+  // Updates with failed modes and clusters whose association failed.
+  int numeric_failures = 0;
+
+  ClusterAssociator::Look association() {
+    return {pre, static_cast<int>(store.size()), report, events, numeric_failures};
+  }
+  /// An update, its failed modes (which kept their prediction) counted for the report.
+  ImmEstimate counted(ImmEstimate update) {
+    numeric_failures += update.numeric_failure() ? 1 : 0;
+    return update;
+  }
+};
+
+/// The start of a new track's estimate (two-point, then IMM updates with the chain's further
+/// plots, which also update its existence).
+ImmEstimate start_estimate(PointLook& look, const Initiation& initiation, TrackLife& life);
+
+/// Marks in look.held the plots a track's non-manoeuvre association holds back from
+/// initiation (initiation.gated_seed_beta).
+void note_explained(PointLook& look, const std::vector<Candidate>& pool, std::span<const int> mine,
+                    std::span<const double> beta);
+
+}  // namespace skytrack
