@@ -1,9 +1,9 @@
 // The display in a real browser: skytrackd fed by a replay of the shipped default scenario,
 // `skytrack display` on a free loopback port, and headless Chromium loading the page. The page
 // reports what it shows (?report=1 posts its #state to /api/page-state); the test checks the
-// track numbers against the offline run of the same plots. Loopback only: its own DDS domain,
-// 127.0.0.1, and Chromium with background networking off and every host name but 127.0.0.1
-// unresolvable.
+// track numbers against the offline run of the same plots. Loopback only: its own DDS
+// partition, 127.0.0.1, and Chromium with background networking off and every host name but
+// 127.0.0.1 unresolvable.
 //
 // Chromium missing: the test fails when SKYTRACK_REQUIRE_BROWSER is set (tools/test.sh, and so
 // CI, sets it after installing the package) and is skipped with the reason otherwise.
@@ -115,11 +115,13 @@ TEST_F(DisplayBrowser, PageShowsTheDaemonsTracksWithTheirNumbers) {
             0);
   const std::set<std::int64_t> expected = last_firm_tracks(path("offline.jsonl"));
   ASSERT_GE(expected.size(), 6u);
-  const int domain = 119;  // the one domain no other test uses (they take 1..118, 120..231)
+  // Every domain id is some test's: this one shares the end-to-end tests' range (1..110, by
+  // process id), and a partition of its own keeps its samples apart from theirs.
+  const int domain = 1 + static_cast<int>(getpid() % 110);
   std::ofstream(path("skytrackd.yaml"))
       << "skytrackd: {instance: browser, profile: " << kSource
       << "/config/profiles/default.yaml, status_period: 0.2}\n"
-      << "dds: {domain: " << domain
+      << "dds: {domain: " << domain << ", partition: display_browser_" << getpid()
       << ", qos: {status: {deadline: 1.0}}}\nqueue: {capacity: 256}\n";
   Child daemon({kDaemon, "--config", path("skytrackd.yaml")}, path("daemon.log"));
   ASSERT_TRUE(daemon.wait_for_log("running", 20s)) << daemon.log();
