@@ -9,7 +9,11 @@ packages=(
   libyaml-cpp-dev libspdlog-dev libfmt-dev
   libsimdjson-dev libcli11-dev libexpected-dev libnanoflann-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libcpp-httplib-dev
 )
+# --test: also what the test suite needs beyond the build: headless Chromium for the display's
+# browser test (tests/daemon/display_browser_test.cpp).
+[ "${1:-}" = "--test" ] && packages+=(chromium)
 
 missing=()
 for p in "${packages[@]}"; do

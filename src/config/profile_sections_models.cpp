@@ -176,6 +176,9 @@ AssociationSpec read_association(YamlSection s) {
   s.number("detection_probability", a.detection_probability, Range::open_probability());
   read_clutter_density(s, a.clutter_density);
   YamlSection map = s.section("clutter_map");
+  // The map refines `auto` only: a fixed density turns its default off, so that a fixed
+  // density works without touching the map; asking for both is refused below.
+  if (a.clutter_density && !map.has("enabled")) a.clutter_map.enabled = false;
   map.boolean("enabled", a.clutter_map.enabled);
   // Physical bounds: a metre to a thousand kilometres, a hundredth of a degree to a half
   // revolution (finer cells than any radar resolves would only overflow the map's indices).

@@ -280,6 +280,23 @@ TEST(ProfileLoader, ClutterMapNeedsAutoDensity) {
             "auto; it cannot be on with a fixed clutter_density");
 }
 
+TEST(ProfileLoader, FixedClutterDensityTurnsTheMapOffUnlessAsked) {
+  // GIVEN a fixed density and no word on the map; THEN the profile loads with the map off
+  const auto fixed =
+      parse_profile(std::string(kHeader) + "association:\n  clutter_density: 1e-9\n", "p.yaml");
+  ASSERT_TRUE(fixed) << fixed.error().message;
+  EXPECT_EQ(fixed->association.clutter_density, 1e-9);
+  EXPECT_FALSE(fixed->association.clutter_map.enabled);
+  // ... and its cells may still be written (they are only unused)
+  EXPECT_EQ(error_of("association:\n  clutter_density: 1e-9\n  clutter_map: {range_cell: 2000}\n"),
+            "(no error)");
+  // GIVEN auto (or nothing): THEN the map is on, as before
+  const auto automatic =
+      parse_profile(std::string(kHeader) + "association:\n  clutter_density: auto\n", "p.yaml");
+  ASSERT_TRUE(automatic);
+  EXPECT_TRUE(automatic->association.clutter_map.enabled);
+}
+
 TEST(ProfileLoader, ClutterMapCellsHavePhysicalBounds) {
   // GIVEN cells no radar resolves (zero, or positive but tiny: they would overflow the map's
   // cell indices) or wider than any coverage; THEN the loader refuses each, naming it

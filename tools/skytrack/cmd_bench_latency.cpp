@@ -125,6 +125,12 @@ void add_bench_latency_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--warmup", o->warmup, "Untimed scans first (track initiation)")->default_val(20);
   cmd->add_option("--sensor", o->sensor, "Sensor id of the scans")->default_val(1);
   add_dds_options(*cmd, o->dds);
+  cmd->footer(
+      "Example: skytrack bench-latency --config config/skytrackd.yaml --targets 1000 "
+      "--scans 100\nExit codes: 0 every scan answered; 1 some scans had no TrackBatch; "
+      "2 the configuration or DDS failed; 3 no skytrackd matched within 30 s; 1xx "
+      "command-line mistakes (CLI11: 105 a bad value, 106 a required option missing, "
+      "109 an unknown argument).");
   cmd->callback([o, &exit_code] { exit_code = run_bench(*o); });
 }
 

@@ -36,6 +36,11 @@ void add_check_profile_command(CLI::App& app, int& exit_code) {
   auto files = std::make_shared<std::vector<std::string>>();
   CLI::App* cmd = app.add_subcommand("check-profile", "Validate YAML tracking profiles");
   cmd->add_option("files", *files, "Profile files (YAML)")->required();
+  cmd->footer(
+      "Example: skytrack check-profile config/profiles/*.yaml\nExit codes: 0 every "
+      "profile is valid; 1 at least one is not (each mistake printed as file:line: key: "
+      "reason); 1xx command-line mistakes (CLI11: 105 a bad value, 106 a required "
+      "option missing, 109 an unknown argument).");
   cmd->callback([files, &exit_code] {
     for (const auto& path : *files) {
       const auto profile = config::load_profile(path);

@@ -409,6 +409,12 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--plot", options->plot_path, "Write an SVG picture of the run");
   cmd->add_option("--per-scan", options->per_scan_path,
                   "Write per-scan metrics (JSON Lines if it ends in .jsonl, else CSV)");
+  cmd->footer(
+      "Example: skytrack eval --truth out/default.truth.jsonl --tracks "
+      "out/default.tracks.jsonl --cutoff 500 --plot out/default.svg\nExit codes: 0 "
+      "scored; 2 an input cannot be read, a needed option is missing or an output "
+      "cannot be written; 1xx command-line mistakes (CLI11: 105 a bad value, 106 a "
+      "required option missing, 109 an unknown argument).");
   cmd->callback([options, identity, by_identity, &exit_code] {
     if (*by_identity) {
       if (identity->plots_path.empty()) {

@@ -99,6 +99,12 @@ void add_import_asterix_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--plots", options->plots, "Output plot stream (JSON Lines)")->required();
   add_asterix_options(*cmd, options->asterix);
   cmd->add_flag("--quiet", options->quiet, "No progress bar");
+  cmd->footer(
+      "Example: skytrack import-asterix capture.pcap --plots "
+      "out/capture.plots.jsonl\nExit codes: 0 done (undecodable records are counted and "
+      "reported); 2 an input cannot be read or the output written; 1xx command-line "
+      "mistakes (CLI11: 105 a bad value, 106 a required option missing, 109 an unknown "
+      "argument).");
   cmd->callback([options, &exit_code] { exit_code = run_import(*options); });
 }
 

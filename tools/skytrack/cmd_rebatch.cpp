@@ -145,7 +145,8 @@ void add_rebatch_command(CLI::App& app, int& exit_code) {
   cmd->footer(
       "Example: skytrack rebatch --plots canalA.plots.jsonl --sectors 8 --out "
       "canalA.8.plots.jsonl\n"
-      "Exit codes: 0 done, 2 a file cannot be read or written.");
+      "Exit codes: 0 done; 2 a file cannot be read or written; 1xx command-line mistakes (CLI11: "
+      "105 a bad value, 106 a required option missing, 109 an unknown argument).");
   cmd->callback([options, &exit_code] { exit_code = run_rebatch(*options); });
 }
 

@@ -160,6 +160,12 @@ void add_record_command(CLI::App& app, int& exit_code) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--quiet", options->quiet, "Only the summary");
   add_dds_options(*cmd, options->dds);
+  cmd->footer(
+      "Example: skytrack record --config config/skytrackd.yaml --tracks "
+      "out/live.tracks.jsonl --until-idle 2\nExit codes: 0 stopped (idle or "
+      "SIGINT/SIGTERM) with everything written; 2 the configuration, DDS or an output "
+      "file failed; 1xx command-line mistakes (CLI11: 105 a bad value, 106 a required "
+      "option missing, 109 an unknown argument).");
   cmd->callback([options, &exit_code] { exit_code = run_record(*options); });
 }
 

@@ -69,6 +69,12 @@ void add_simulate_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--plots", options->plots, "Output plot stream (JSON Lines)")->required();
   cmd->add_option("--truth", options->truth, "Output ground truth (JSON Lines)")->required();
   cmd->add_option("--seed", options->seed, "Random seed (default: the scenario's)");
+  cmd->footer(
+      "Example: skytrack simulate --scenario config/scenarios/default.yaml --plots "
+      "out/default.plots.jsonl --truth out/default.truth.jsonl\nExit codes: 0 done; 2 "
+      "the scenario is invalid or a file cannot be written; 1xx command-line mistakes "
+      "(CLI11: 105 a bad value, 106 a required option missing, 109 an unknown "
+      "argument).");
   cmd->callback([options, &exit_code] { exit_code = run_simulate(*options); });
 }
 

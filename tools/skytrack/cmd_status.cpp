@@ -133,6 +133,11 @@ void add_status_command(CLI::App& app, int& exit_code) {
                   "Print every status sample for this many seconds instead, and each missed "
                   "deadline (a daemon gone quiet)");
   add_dds_options(*cmd, options->dds);
+  cmd->footer(
+      "Example: skytrack status --config config/skytrackd.yaml\nExit codes: 0 printed "
+      "(or --follow ran its time); 2 the configuration or DDS failed; 3 no "
+      "TrackerStatus within --wait; 1xx command-line mistakes (CLI11: 105 a bad value, "
+      "106 a required option missing, 109 an unknown argument).");
   cmd->callback([options, &exit_code] { exit_code = run_status(*options); });
 }
 

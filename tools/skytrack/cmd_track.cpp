@@ -149,6 +149,12 @@ void add_track_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--plots", options->plots, "Input plot stream (JSON Lines)")->required();
   cmd->add_option("--out", options->out, "Output track stream (JSON Lines)")->required();
   cmd->add_flag("--quiet", options->quiet, "No progress bar");
+  cmd->footer(
+      "Example: skytrack track --profile config/profiles/default.yaml --plots "
+      "out/default.plots.jsonl --out out/offline.tracks.jsonl\nExit codes: 0 done (bad "
+      "lines are reported and skipped); 2 the profile is invalid or a file cannot be "
+      "read or written; 1xx command-line mistakes (CLI11: 105 a bad value, 106 a "
+      "required option missing, 109 an unknown argument).");
   cmd->callback([options, &exit_code] { exit_code = run_track(*options); });
 }
 

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   skytrack::tool::add_bench_latency_command(app, exit_code);
   skytrack::tool::add_rebatch_command(app, exit_code);
   skytrack::tool::add_import_asterix_command(app, exit_code);
+  skytrack::tool::add_display_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
 }
