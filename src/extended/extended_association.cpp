@@ -1,5 +1,6 @@
 // The extended tracker's association of partitions several tracks or no track gate: the
-// split of a shared partition (hard-assignment EM) and the claim of an ungated partition by
+// coast of two shapeless tracks through a crossing, the split of a shared partition
+// (hard-assignment EM) and the claim of an ungated partition by
 // a confirmed track seen off its prediction (see extended_tracker.hpp).
 #include <algorithm>
 #include <cmath>
@@ -28,6 +29,40 @@ Eigen::Matrix2d ExtendedTracker::association_extent(const ExtendedTrack& track) 
   if (eig.info() != Eigen::Success) return track.object.extent;
   const Eigen::Vector2d axes = eig.eigenvalues().cwiseMax(floor);
   return eig.eigenvectors() * axes.asDiagonal() * eig.eigenvectors().transpose();
+}
+
+bool ExtendedTracker::crossing_unresolved() const noexcept {
+  // Two confirmed tracks whose predicted objects overlap share one partition. The split
+  // goes by the objects' shapes and centres; when a track's extent estimate collapsed below
+  // the floor (SMF-EOT's inner estimate on a few plots) it has no shape, and with the
+  // centres within the objects' size the split is arbitrary: a wrong one moves each centre
+  // towards the other object and turns its velocity, and the tracks leave the crossing with
+  // each other's objects. When the tracks' own velocities separate the objects by the next
+  // scan, both coast through this one on their predictions (identity by motion), once:
+  // tracks still unresolved after it (a duplicate, objects in formation) are split.
+  if (gated_.size() != 2 || !(scan_dt_ > 0.0)) return false;
+  const int ta = gated_[0].track, tb = gated_[1].track;
+  const ExtendedTrack& a = tracks_[ta];
+  const ExtendedTrack& b = tracks_[tb];
+  if (a.status != ExtendedTrackStatus::kConfirmed || b.status != ExtendedTrackStatus::kConfirmed ||
+      was_unresolved_[ta] || was_unresolved_[tb]) {
+    return false;
+  }
+  const double floor = spec_.initial_extent_axis * spec_.initial_extent_axis;
+  auto shapeless = [floor](const ExtendedTrack& track) {
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(track.object.extent);
+    return eig.info() == Eigen::Success && eig.eigenvalues().maxCoeff() <= floor;
+  };
+  if (!shapeless(a) && !shapeless(b)) return false;
+  // Overlap: the centres' difference within the sum of both objects and centre covariances.
+  const PosMat H = position_matrix();
+  const Eigen::Matrix2d G = H * (a.object.P + b.object.P) * H.transpose() +
+                            association_extents_[ta] + association_extents_[tb];
+  const Eigen::LLT<Eigen::Matrix2d> llt(G);
+  if (llt.info() != Eigen::Success) return false;
+  const Eigen::Vector2d now = a.position() - b.position();
+  const Eigen::Vector2d next = now + scan_dt_ * (a.velocity() - b.velocity());
+  return now.dot(llt.solve(now)) <= 1.0 && next.dot(llt.solve(next)) > 1.0;
 }
 
 void ExtendedTracker::split_shared(const std::vector<int>& group) {
@@ -117,7 +152,7 @@ bool ExtendedTracker::claim_by_confirmed(const std::vector<int>& group) {
   const int min_plots = std::max(1, spec_.min_partition_plots);
   int best = -1, best_count = 0;
   for (int t = 0; t < static_cast<int>(tracks_.size()); ++t) {
-    if (tracks_[t].status != ExtendedTrackStatus::kConfirmed) continue;
+    if (tracks_[t].status != ExtendedTrackStatus::kConfirmed || tracks_[t].unresolved) continue;
     if (static_cast<int>(track_plots_[t].size()) >= min_plots) continue;
     int count = 0;
     for (int i : group) {

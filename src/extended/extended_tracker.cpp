@@ -95,9 +95,12 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
   report.plots = n - report.rejected_plots;
 
   association_extents_.clear();
+  was_unresolved_.clear();
   for (ExtendedTrack& track : tracks_) {
+    was_unresolved_.push_back(track.unresolved);
     if (dt > 0.0) estimator_.predict(track.object, dt);
     track.plots = 0;
+    track.unresolved = false;
     association_extents_.push_back(association_extent(track));
   }
   if (partitions.empty()) {
@@ -157,6 +160,10 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
           track_plots_[t].push_back(i);
         }
       }
+      continue;
+    }
+    if (crossing_unresolved()) {
+      for (const Gated& g : gated_) tracks_[g.track].unresolved = true;
       continue;
     }
     split_shared(group);
@@ -257,7 +264,7 @@ void ExtendedTracker::manage(ExtendedScanReport& report) {
         track.status = ExtendedTrackStatus::kConfirmed;
         ++report.confirmed;
       }
-    } else {
+    } else if (!track.unresolved) {
       ++track.misses;
     }
   }

@@ -95,5 +95,50 @@ TEST(ExtendedCrossing, FadedTrackKeepsItsObjectThroughASharedPartition) {
   }
 }
 
+// Two small objects (10 m, below the 50 m extent floor: their tracks have no shape to split
+// by) cross at the origin at 100 s with coinciding centres; the tracks coast through that
+// scan on their velocities and pick their own objects up again after it.
+TEST(ExtendedCrossing, ShapelessTracksCoastThroughTheCrossingAndKeepTheirObjects) {
+  const Mover movers[2] = {{{-1500.0, 0.0}, {15.0, 0.0}, 10.0, 5.0},
+                           {{0.0, -1500.0}, {0.0, 15.0}, 10.0, 5.0}};
+  for (EstimatorKind kind :
+       {EstimatorKind::kSmf, EstimatorKind::kRandomMatrix, EstimatorKind::kMemEkf}) {
+    SCOPED_TRACE(std::string(to_string(kind)));
+    ExtendedSpec spec;
+    spec.kind = kind;
+    ExtendedTracker tracker(spec);
+    std::vector<Eigen::Vector2d> plots;
+    std::uint64_t before[2] = {0, 0}, after[2] = {0, 0};
+    int coasted = 0;
+    for (int k = 0; k <= 16; ++k) {  // GIVEN the two objects, 8 plots each a scan
+      const double t = 10.0 * k;
+      plots.clear();
+      for (const Mover& m : movers) ring_plots(m, t, k, plots);
+      const std::vector<Eigen::Matrix2d> noises(plots.size(), Eigen::Matrix2d::Identity() * 25.0);
+      tracker.process(t, plots, noises);  // WHEN every scan is processed
+      for (const ExtendedTrack& track : tracker.tracks()) {
+        EXPECT_EQ(track.misses, 0);
+        if (t == 100.0 && track.unresolved) ++coasted;
+      }
+      if (t != 70.0 && t != 160.0) continue;
+      for (int o = 0; o < 2; ++o) {
+        for (const ExtendedTrack& track : tracker.tracks()) {
+          if (track.status == ExtendedTrackStatus::kConfirmed &&
+              (track.position() - centre(movers[o], t)).norm() < 30.0) {
+            (t == 70.0 ? before : after)[o] = track.id;
+          }
+        }
+      }
+    }
+    // THEN both coasted through the crossing, neither counted a miss, numbers kept
+    EXPECT_EQ(coasted, 2);
+    ASSERT_NE(before[0], 0u);
+    ASSERT_NE(before[1], 0u);
+    EXPECT_EQ(after[0], before[0]);
+    EXPECT_EQ(after[1], before[1]);
+    EXPECT_EQ(tracker.tracks().size(), 2u);
+  }
+}
+
 }  // namespace
 }  // namespace skytrack::extended

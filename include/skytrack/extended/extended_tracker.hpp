@@ -4,12 +4,13 @@
 // distance partitioning), partitions are gated by each track's extent (floored at a new
 // track's) and given to the gating track; a partition several confirmed tracks gate (two
 // crossing objects) is split plot by plot, the split refined by moving each track's centre
-// to the plots it holds (hard-assignment EM), and a tentative track never shares a
-// confirmed one's partition; a partition no track gates but whose plots lie in the plot
-// gate of a confirmed track that found none of its own goes to that track (the object seen
-// off its prediction), the others start tentative tracks; each track is updated by the
-// profile's estimator; tentative tracks are confirmed when they keep taking partitions,
-// and tracks that stop taking them are deleted. Deterministic: no random numbers, ties
+// to the plots it holds (hard-assignment EM), unless the objects overlap, one track's extent
+// has no shape and their velocities part them by the next scan: then both coast (not a
+// miss); a tentative track never shares a confirmed one's partition; a partition no track gates but
+// whose plots lie in the plot gate of a confirmed track that found none of its own goes to that
+// track (the object seen off its prediction), the others start tentative tracks; each track is
+// updated by the profile's estimator; tentative tracks are confirmed when they keep taking
+// partitions, and tracks that stop taking them are deleted. Deterministic: no random numbers, ties
 // broken by track number and plot index.
 #include <cstdint>
 #include <span>
@@ -28,10 +29,13 @@ enum class ExtendedTrackStatus : std::uint8_t { kTentative, kConfirmed };
 struct ExtendedTrack {
   std::uint64_t id = 0;  // stable track number, from 1, never reused
   ExtendedTrackStatus status = ExtendedTrackStatus::kTentative;
-  ExtendedObject object;        // centre state, covariance, extent X
-  int hits = 0;                 // scans it took plots in
-  int misses = 0;               // consecutive scans without plots
-  int plots = 0;                // plots it took in the last scan
+  ExtendedObject object;  // centre state, covariance, extent X
+  int hits = 0;           // scans it took plots in
+  int misses = 0;         // consecutive scans without plots
+  int plots = 0;          // plots it took in the last scan
+  /// In the last scan it shared a partition with a crossing neighbour it could not be told
+  /// from, and coasted on its prediction: not a miss.
+  bool unresolved = false;
   double birth_variance = 0.0;  // [m^2] its first centre's variance per axis
 
   Eigen::Vector2d position() const { return object.position(); }   // [m] centre
@@ -82,6 +86,7 @@ class ExtendedTracker {
                        double extent_weight, double* log_det) const noexcept;
   void associate(std::span<const std::vector<int>> partitions, ExtendedScanReport& report);
   Eigen::Matrix2d association_extent(const ExtendedTrack& track) const noexcept;
+  bool crossing_unresolved() const noexcept;
   void split_shared(const std::vector<int>& group);
   bool claim_by_confirmed(const std::vector<int>& group);
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
@@ -104,6 +109,7 @@ class ExtendedTracker {
   std::vector<std::vector<int>> track_plots_;
   std::vector<Gated> gated_;
   std::vector<Eigen::Matrix2d> association_extents_;  // per track, this scan
+  std::vector<char> was_unresolved_;                  // per track, the last scan's flag
   std::vector<Eigen::Vector2d> split_centre_;         // per gating track, its centre in the split
   std::vector<Eigen::Matrix2d> split_cov_;
   std::vector<int> split_owner_;  // per plot of the partition, its index into gated_
