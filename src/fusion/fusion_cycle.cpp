@@ -38,6 +38,38 @@ void add_event(TrackFrame& frame, TrackEventType type, std::int64_t id, std::str
 
 }  // namespace
 
+// A merge keeps the older number: when every last source of system track X (fed no more)
+// now sits in one newer system track Y, Y's sources go to X and Y is deleted, merged into X.
+// Without it, a pair that parts for a cycle and joins again would leave the newer number.
+void TrackFusion::State::keep_older_numbers(std::uint64_t k) {
+  merges.clear();
+  fed_ids = system_of;
+  std::sort(fed_ids.begin(), fed_ids.end());
+  for (const auto& [x, s] : systems) {
+    if (s.last_sources.empty() || std::binary_search(fed_ids.begin(), fed_ids.end(), x)) continue;
+    std::int64_t y = 0;
+    for (const TrackSource& src : s.last_sources) {
+      const auto rec = records.find({src.sensor, src.track});
+      const bool here = rec != records.end() && rec->second.last_cycle == k;
+      if (!here || (y != 0 && rec->second.system != y)) {
+        y = 0;
+        break;
+      }
+      y = rec->second.system;
+    }
+    const bool taken =
+        std::any_of(merges.begin(), merges.end(), [y](const auto& m) { return m.first == y; });
+    if (y > x && !taken) merges.emplace_back(y, x);
+  }
+  for (const auto& [from, to] : merges) {
+    for (std::size_t i = 0; i < present.size(); ++i) {
+      if (system_of[i] != from) continue;
+      system_of[i] = to;
+      present[i].record->system = to;
+    }
+  }
+}
+
 TrackFrame TrackFusion::State::fuse_cycle() {
   const std::uint64_t k = next_cycle;
   const double b = cycle_time(k);
@@ -59,14 +91,14 @@ TrackFrame TrackFusion::State::fuse_cycle() {
       p.sigma2 = p.position.cov.trace();
       auto [it, inserted] = records.try_emplace({sensor_id, t.id});
       if (inserted) it->second.history.reserve(window_cycles);
+      // A system track deleted meanwhile is not rejoined: its number is never reused.
+      if (it->second.system != 0 && !systems.contains(it->second.system)) it->second.system = 0;
       p.record = &it->second;
       present.push_back(p);
     }
   }
-  const std::int64_t first_new_id = next_id;
   associator.associate(present, k, window_cycles, next_id, system_of);
   counters.pairs_scored += associator.pairs_scored();
-  counters.system_tracks += static_cast<std::uint64_t>(next_id - first_new_id);
 
   // The local tracks remember this cycle's system track and position.
   for (std::size_t i = 0; i < present.size(); ++i) {
@@ -76,8 +108,9 @@ TrackFrame TrackFusion::State::fuse_cycle() {
     if (rec.history.size() >= window_cycles) rec.history.erase(rec.history.begin());
     rec.history.push_back({k, present[i].position});
   }
+  keep_older_numbers(k);
+  // An absent local track keeps its system track: back within the window, it rejoins it.
   for (auto it = records.begin(); it != records.end();) {
-    if (it->second.last_cycle != k) it->second.system = 0;
     const bool stale = it->second.last_cycle + window_cycles <= k;
     it = stale ? records.erase(it) : std::next(it);
   }
@@ -91,8 +124,12 @@ TrackFrame TrackFusion::State::fuse_cycle() {
            (system_of[static_cast<std::size_t>(x)] == system_of[static_cast<std::size_t>(y)] &&
             x < y);
   });
-  for (std::int64_t id = first_new_id; id < next_id; ++id)
-    systems.try_emplace(id).first->second.fresh = true;
+  for (const std::int64_t id : system_of) {
+    auto [it, inserted] = systems.try_emplace(id);
+    if (!inserted) continue;
+    it->second.fresh = true;
+    ++counters.system_tracks;
+  }
 
   TrackFrame frame;
   frame.sensor = spec.output_sensor;
@@ -132,7 +169,9 @@ TrackFrame TrackFusion::State::fuse_cycle() {
     } else {
       // Merged: every last source is here this cycle, fused into another system track.
       std::int64_t merged_into = 0;
-      bool merged = !s.last_sources.empty();
+      const auto renumbered =
+          std::find_if(merges.begin(), merges.end(), [id](const auto& m) { return m.first == id; });
+      bool merged = !s.last_sources.empty() || renumbered != merges.end();
       for (const TrackSource& src : s.last_sources) {
         const auto rec = records.find({src.sensor, src.track});
         if (rec == records.end() || rec->second.last_cycle != k || rec->second.system == id) {
@@ -140,6 +179,10 @@ TrackFrame TrackFusion::State::fuse_cycle() {
           break;
         }
         merged_into = rec->second.system;
+      }
+      if (renumbered != merges.end()) {
+        merged = true;
+        merged_into = renumbered->second;
       }
       s.state = predict_cv(s.state, b - s.state_time, spec.accel_psd);
       if (merged) {

@@ -72,6 +72,8 @@ struct TrackFusion::State {
   std::vector<std::int64_t> system_of;
   std::vector<StateEstimate> fuse_inputs;
   std::vector<int> associator_order;
+  std::vector<std::int64_t> fed_ids;
+  std::vector<std::pair<std::int64_t, std::int64_t>> merges;  // (newer, older) system numbers
 
   double cycle_time(std::uint64_t index) const {
     return grid_origin + static_cast<double>(index) * spec.cycle;
@@ -81,6 +83,7 @@ struct TrackFusion::State {
   /// Fuses every cycle that is due: all live sensors past it, or with `flushing` every
   /// cycle up to the latest data time.
   std::vector<TrackFrame> run_due_cycles(bool flushing);
+  void keep_older_numbers(std::uint64_t k);
 };
 
 }  // namespace skytrack::fusion

@@ -11,7 +11,7 @@ namespace skytrack::fusion::detail {
 /// What the fusion remembers of one local track between cycles.
 struct LocalRecord {
   std::vector<HistoryPoint> history;  // increasing cycles, at most the window's
-  std::int64_t system = 0;            // the system track it was fused into last cycle (0: none)
+  std::int64_t system = 0;            // the system track it was last fused into (0: none)
   std::uint64_t last_cycle = 0;
 };
 

@@ -119,15 +119,17 @@ std::vector<TrackFrame> TrackFusion::add(const TrackFrame& local) {
     ++st.counters.frames_invalid;
     return {};
   }
-  if (st.fused_any && local.time <= st.last_fused + time_epsilon(local.time)) {
-    ++st.counters.frames_late;
-    return {};
-  }
   const auto found = st.sensors.find(local.sensor);
-  if (found != st.sensors.end() && local.time <= found->second.last_time) {
+  const bool joining = found == st.sensors.end() || !found->second.live;
+  const bool late = st.fused_any && local.time <= st.last_fused + time_epsilon(local.time);
+  if ((late && !joining) || (found != st.sensors.end() && local.time <= found->second.last_time)) {
     ++st.counters.frames_late;
     return {};
   }
+  // A new or returning sensor's frame that is late for its cycle still makes the sensor
+  // live, so the next cycles wait for it: without, a sensor reporting just after the others
+  // would stay late for ever.
+  if (late) ++st.counters.frames_late;
   SensorFrame frame;
   frame.time = local.time;
   frame.tracks.reserve(local.tracks.size());
@@ -156,7 +158,7 @@ std::vector<TrackFrame> TrackFusion::add(const TrackFrame& local) {
   }
   sensor.last_time = local.time;
   sensor.live = true;
-  ++st.counters.frames;
+  if (!late) ++st.counters.frames;
   st.data_time = std::max(st.data_time, local.time);
   if (!st.started) {
     st.started = true;

@@ -1,4 +1,5 @@
 // System tracks through merges and splits of their local tracks.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -30,9 +31,11 @@ TEST(TrackFusionMergeSplit, TwoSystemTracksOfOneTargetMergeAndOneIsDeletedAtOnce
   const std::vector<TrackFrame> out = run(3000.0, 10.0);
   ASSERT_EQ(out.size(), 30u);
   EXPECT_EQ(out[5].tracks.size(), 2u);  // two targets as far as the fusion can tell
-  // THEN one system track with both sources once the window no longer holds the far past
+  // THEN one system track with both sources once the window no longer holds the far past,
+  // under the older number
   ASSERT_EQ(out.back().tracks.size(), 1u);
   EXPECT_EQ(out.back().tracks[0].sources.size(), 2u);
+  EXPECT_EQ(out.back().tracks[0].id, std::min(out[5].tracks[0].id, out[5].tracks[1].id));
   int deleted = 0;
   for (const TrackFrame& f : out) {
     for (const TrackEvent& e : f.events) {

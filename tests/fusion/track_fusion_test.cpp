@@ -168,6 +168,57 @@ TEST(TrackFusion, FlushFusesTheOpenCycles) {
   EXPECT_EQ(fusion.counters().cycles, 3u);
 }
 
+TEST(TrackFusion, ThreeDimensionalTracksGiveThreeDimensionalSystemTracks) {
+  TrackFusion fusion{FusionSpec{}};
+  std::vector<TrackFrame> out;
+  for (double t = 0; t < 3; t += 1.0) {
+    for (std::uint32_t s = 1; s <= 2; ++s) {
+      TrackFrame f = frame(s, t, {{s == 1 ? 1 : 5, 100 * t, 0}});
+      TrackReport& r = f.tracks[0];
+      r.dims = 3;
+      r.position.z() = 3000.0 + 10.0 * s;
+      r.covariance.assign(36, 0.0);
+      for (int i = 0; i < 6; ++i) r.covariance[static_cast<std::size_t>(i * 7)] = 400.0;
+      for (auto& g : fusion.add(f)) out.push_back(g);
+    }
+  }
+  ASSERT_FALSE(out.empty());
+  const TrackReport& t = out.back().tracks.at(0);
+  EXPECT_EQ(t.dims, 3);
+  EXPECT_EQ(t.covariance.size(), 36u);
+  EXPECT_EQ(t.sources.size(), 2u);
+  EXPECT_NEAR(t.position.z(), 3015.0, 1e-9);  // equal covariances: the mean
+}
+
+TEST(TrackFusion, ADroppedSensorComesBackIntoItsSystemTracks) {
+  TwoSensors s;
+  s.feed(0, 10);
+  s.feed(10, 20, 11, 12, 21, 22, /*sensor_b=*/false);
+  s.feed(20, 30);
+  EXPECT_EQ(s.fusion.counters().sensors_dropped, 1u);
+  EXPECT_EQ(s.fusion.counters().system_tracks, 2u);
+  for (const TrackReport& t : s.out.back().tracks) EXPECT_EQ(t.sources.size(), 2u);
+}
+
+TEST(TrackFusion, ALocalTrackBackFromAShortGapRejoinsItsSystemTrack) {
+  TrackFusion fusion{FusionSpec{}};
+  std::vector<TrackFrame> out;
+  const auto feed = [&](double t, bool present) {
+    TrackFrame f = present ? frame(1, t, {{7, 100 * t, 0}}) : frame(1, t, {});
+    for (auto& g : fusion.add(f)) out.push_back(g);
+  };
+  for (int k = 0; k < 20; ++k) feed(k, k < 5 || (k >= 8 && k < 12) || k >= 19);
+  // back after 3 cycles (coasting 3 s < 5 s): the same number, confirmed again
+  EXPECT_EQ(out[7].tracks.at(0).status, TrackStatus::kCoasting);
+  ASSERT_EQ(out[8].tracks.size(), 1u);
+  EXPECT_EQ(out[8].tracks[0].id, out[0].tracks[0].id);
+  EXPECT_EQ(out[8].tracks[0].status, TrackStatus::kConfirmed);
+  // back after 7 cycles, its system track deleted meanwhile: a new number, never a reused one
+  ASSERT_EQ(out[19].tracks.size(), 1u);
+  EXPECT_GT(out[19].tracks[0].id, out[0].tracks[0].id);
+  EXPECT_EQ(fusion.counters().system_tracks, 2u);
+}
+
 TEST(TrackFusion, AGapInDataTimeIsJumpedOver) {
   TrackFusion fusion{FusionSpec{}};
   fusion.add(frame(1, 0.0, {{1, 0, 0}}));

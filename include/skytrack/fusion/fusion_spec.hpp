@@ -28,7 +28,7 @@ struct FusionSpec {
   Metric metric = Metric::kNormalised;
   double cutoff = 10.0;         // c [sigma | m]: a pair farther apart is "different", whatever
   double order = 2.0;           // p of eq. 9-10
-  double label_penalty = 2.0;   // alpha in (0, c) [sigma | m]: paid by a pair not fused last cycle
+  double label_penalty = 2.0;   // alpha in [0, c) [sigma | m]: a pair not last fused together
   double gate = 4.0;            // gamma [sigma | m]: a pair whose MOSPA is below it is one target
   double sensor_timeout = 5.0;  // [s] of data time without a frame: the sensor is dropped
   double coast_time = 5.0;      // [s] a system track without sources is kept, coasting

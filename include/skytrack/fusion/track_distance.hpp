@@ -9,8 +9,8 @@
 //                            E|x - y|^2 = |mx - my|^2 + tr(Px + Py) (Euclidean), and
 //                            E[(x-y)' S^-1 (x-y)] = (mx-my)' S^-1 (mx-my) + n, S = Px + Py
 // Readings (docs/fusion.md): E[d^p] is taken as E[d^2]^(p/2), exact for p = 2; the cutoff
-// applies after the expectation; delta = 1 when the two tracks were not fused together in
-// the last cycle (label hysteresis), else 0.
+// applies after the expectation; delta = 1 when the two tracks were not last fused into the
+// same system track (label hysteresis), else 0.
 #include <cstdint>
 #include <span>
 

@@ -15,6 +15,7 @@ namespace skytrack::fusion {
 struct FusionCounters {
   std::uint64_t frames = 0;           // local frames accepted
   std::uint64_t frames_late = 0;      // older than the last fused cycle or the sensor's last frame
+                                      // (a new or returning sensor's is kept: it joins)
   std::uint64_t frames_invalid = 0;   // non-finite time: ignored
   std::uint64_t frames_dropped = 0;   // queued beyond max_queued_frames for a slow sensor
   std::uint64_t tracks_invalid = 0;   // local tracks with non-finite or non-PD state: ignored
