@@ -33,4 +33,8 @@ std::vector<std::vector<ScanTally>> run_monte_carlo(const std::vector<TruthFrame
 /// replaces alpha's default (0: no label hysteresis, as with the paper's constant label term).
 fusion::FusionSpec paper_spec(fusion::Blend blend, double label_sigmas);
 
+/// The base-distance check of docs/fusion.md: normalised against metres on targets whose
+/// track errors differ (20-300 m); prints a Markdown table.
+void run_metric_check(int runs, std::uint64_t first_seed);
+
 }  // namespace skytrack::fusion_mc

@@ -89,7 +89,8 @@ int main(int argc, char** argv) {
   double label_sigmas = skytrack::fusion::FusionSpec{}.label_penalty;
   app.add_option("--runs", runs, "Monte Carlo runs per case")->check(CLI::Range(1, 100000));
   app.add_option("--first-seed", first_seed, "Seed of the first run; run i uses it + i");
-  app.add_option("--only", only, "One case only")->check(CLI::IsMember({"merge", "split"}));
+  app.add_option("--only", only, "One case only")
+      ->check(CLI::IsMember({"merge", "split", "metric"}));
   app.add_flag("--per-scan", per_scan, "Print the per-scan table");
   app.add_option("--label-penalty", label_sigmas,
                  "alpha in pair sigmas (default: the shipped one; 0: no hysteresis)")
@@ -100,6 +101,10 @@ int main(int argc, char** argv) {
   const std::vector<skytrack::fusion::FusionSpec> specs{
       mc::paper_spec(Blend::kAdaptive, label_sigmas), mc::paper_spec(Blend::kFixed, label_sigmas)};
   try {
+    if (only == "metric") {
+      mc::run_metric_check(runs, first_seed);
+      return 0;
+    }
     for (const std::string name : {"merge", "split"}) {
       if (!only.empty() && only != name) continue;
       const auto truth = mc::load_truth(std::string(SKYTRACK_SOURCE_DIR) +
