@@ -16,5 +16,6 @@ void add_bench_latency_command(CLI::App& app, int& exit_code);
 void add_rebatch_command(CLI::App& app, int& exit_code);
 void add_import_asterix_command(CLI::App& app, int& exit_code);
 void add_display_command(CLI::App& app, int& exit_code);
+void add_fuse_command(CLI::App& app, int& exit_code);
 
 }  // namespace skytrack::tool

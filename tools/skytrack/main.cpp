@@ -1,5 +1,5 @@
-// skytrack: the command-line tool (simulate, track, eval, check-profile, import-asterix; replay,
-// record and status over DDS).
+// skytrack: the command-line tool (simulate, track, eval, check-profile, import-asterix, fuse;
+// replay, record and status over DDS).
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   skytrack::tool::add_rebatch_command(app, exit_code);
   skytrack::tool::add_import_asterix_command(app, exit_code);
   skytrack::tool::add_display_command(app, exit_code);
+  skytrack::tool::add_fuse_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
 }
