@@ -64,7 +64,7 @@ std::size_t MmBernoulliFilter::predict_model(int j, double survival_mass, double
   // stride from a random start (systematic, not multinomial, draws: a model's own cloud
   // passes on whole instead of losing a third of its distinct particles each scan).
   std::size_t n = 0;
-  parents_.clear();
+  MomentAccumulator parents;  // local: its sums stay in registers in the loops below
   double cumulative = 0.0;
   const double offset = rng_.uniform();
   int last_source = 0;  // the last model with a share: it fills what rounding leaves
@@ -78,22 +78,25 @@ std::size_t MmBernoulliFilter::predict_model(int j, double survival_mass, double
     const std::vector<Particle>& source = posterior_[i];
     const double stride = static_cast<double>(source.size()) / static_cast<double>(end - n);
     const double start = rng_.uniform() * stride;
+    // Gather, then the parents' moments, then the propagation, each a tight loop (the
+    // moments' sums stay in registers; interleaved with the sampler they spill).
+    const std::size_t begin = n;
     for (std::size_t k = 0; n < end; ++n, ++k) {
       const auto index = std::min(
           source.size() - 1, static_cast<std::size_t>(start + static_cast<double>(k) * stride));
       work[n] = source[index];
-      parents_.add(work[n]);
-      propagate(dynamics, work[n], rng_);
     }
+    for (std::size_t k = begin; k < end; ++k) parents.add(work[k]);
+    for (std::size_t k = begin; k < end; ++k) propagate(dynamics, work[k], rng_);
   }
   for (; n < survivors; ++n) {  // rounding left a slot: the last model fills it
     const std::vector<Particle>& source = posterior_[last_source];
     work[n] = source[rng_.index(static_cast<std::uint32_t>(source.size()))];
-    parents_.add(work[n]);
+    parents.add(work[n]);
     propagate(dynamics, work[n], rng_);
   }
   survivors_[j] = survivors;
-  parents_.moments(predicted_mean_[j], predicted_covariance_[j]);
+  parents.moments(predicted_mean_[j], predicted_covariance_[j]);
   predict_moments(dynamics, predicted_mean_[j], predicted_covariance_[j]);
   const std::size_t newborn = birth_mass > 0.0 ? work.size() - posterior_[j].size() : 0;
   // The newborn cloud at scan k-1 is drawn once per scan and shared by the models (common
@@ -131,8 +134,7 @@ double MmBernoulliFilter::likelihood_integral(int j, std::size_t survivors,
   return integral;
 }
 
-Eigen::Vector4d MmBernoulliFilter::model_estimate(int j, std::span<const Particle> cloud,
-                                                  std::span<const double> weights,
+Eigen::Vector4d MmBernoulliFilter::model_estimate(int j, const BlockMean& survivors,
                                                   const Eigen::Vector4d& mean) const noexcept {
   // The weighted mean of the velocity carries, besides E[v|p], the residual v - E[v|p]:
   // independent of the position under the predicted density, so of the likelihood, its
@@ -142,25 +144,14 @@ Eigen::Vector4d MmBernoulliFilter::model_estimate(int j, std::span<const Particl
   // conditional Monte Carlo) drops that noise for the survivors; newborns keep their own
   // weighted mean (their birth cloud is not one Gaussian).
   Eigen::Vector4d estimate = mean;
-  const std::size_t survivors = std::min(survivors_[j], cloud.size());
-  if (survivors < 2) return estimate;
-  double mass = 0.0, x = 0.0, y = 0.0, vx = 0.0, vy = 0.0;
-  for (std::size_t k = 0; k < survivors; ++k) {
-    const double w = weights[k];
-    mass += w;
-    x += w * cloud[k].x;
-    y += w * cloud[k].y;
-    vx += w * cloud[k].vx;
-    vy += w * cloud[k].vy;
-  }
-  if (!(mass > 0.0)) return estimate;
-  x /= mass, y /= mass, vx /= mass, vy /= mass;
-  double cx = vx, cy = vy;
-  if (!velocity_given_position(predicted_mean_[j], predicted_covariance_[j], x, y, cx, cy)) {
+  if (survivors_[j] < 2 || !(survivors.mass > 0.0)) return estimate;
+  const Eigen::Vector4d& s = survivors.mean;
+  double cx = s[1], cy = s[3];
+  if (!velocity_given_position(predicted_mean_[j], predicted_covariance_[j], s[0], s[2], cx, cy)) {
     return estimate;
   }
-  estimate[1] += mass * (cx - vx);  // the survivors' share of the model's velocity
-  estimate[3] += mass * (cy - vy);
+  estimate[1] += survivors.mass * (cx - s[1]);  // the survivors' share of the model's velocity
+  estimate[3] += survivors.mass * (cy - s[3]);
   return estimate;
 }
 
@@ -192,8 +183,9 @@ void MmBernoulliFilter::update_and_resample(const std::array<std::size_t, kMaxMo
     }
     const std::span<const Particle> cloud(work_[j].data(), n);
     const std::span<const double> w(weight_[j].data(), n);
-    weighted_moments(cloud, w, means[j], covariances[j]);
-    estimates[j] = model_estimate(j, cloud, w, means[j]);
+    BlockMean survivors;  // taken in the moments' pass
+    weighted_moments(cloud, w, survivors_[j], means[j], covariances[j], survivors);
+    estimates[j] = model_estimate(j, survivors, means[j]);
     systematic_resample(cloud, w, rng_.uniform(), posterior_[j]);
     const auto n_j = posterior_[j].size();
     // Step 3(3) keeps N_j particles, but after a birth they descend from the few newborns

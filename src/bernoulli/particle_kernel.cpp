@@ -146,23 +146,42 @@ void systematic_resample(std::span<const Particle> in, std::span<const double> w
 
 void weighted_moments(std::span<const Particle> particles, std::span<const double> weights,
                       Eigen::Vector4d& mean, Eigen::Matrix4d& covariance) noexcept {
+  BlockMean unused;
+  weighted_moments(particles, weights, 0, mean, covariance, unused);
+}
+
+void weighted_moments(std::span<const Particle> particles, std::span<const double> weights,
+                      std::size_t head, Eigen::Vector4d& mean, Eigen::Matrix4d& covariance,
+                      BlockMean& head_mean) noexcept {
   // One pass about a reference particle, so the sums stay small (positions are ~1e4 m).
   mean.setZero();
   covariance.setZero();
+  head_mean = BlockMean{};
   if (particles.empty()) return;
   const Particle& r = particles[0];
+  const Eigen::Vector4d reference(r.x, r.vx, r.y, r.vy);
+  head = std::min(head, particles.size());
   double s0 = 0, s1 = 0, s2 = 0, s3 = 0, total = 0;
   double s00 = 0, s01 = 0, s02 = 0, s03 = 0, s11 = 0, s12 = 0, s13 = 0, s22 = 0, s23 = 0, s33 = 0;
-  for (std::size_t n = 0; n < particles.size(); ++n) {
-    const Particle& p = particles[n];
-    const double w = weights[n];
-    const double d0 = p.x - r.x, d1 = p.vx - r.vx, d2 = p.y - r.y, d3 = p.vy - r.vy;
-    const double w0 = w * d0, w1 = w * d1, w2 = w * d2, w3 = w * d3;
-    total += w;
-    s0 += w0, s1 += w1, s2 += w2, s3 += w3;
-    s00 += w0 * d0, s01 += w0 * d1, s02 += w0 * d2, s03 += w0 * d3;
-    s11 += w1 * d1, s12 += w1 * d2, s13 += w1 * d3;
-    s22 += w2 * d2, s23 += w2 * d3, s33 += w3 * d3;
+  // Two loops over one set of running sums (a branch or a lambda on them in the loop would
+  // keep the sums in memory): the leading block's mean is read between them.
+  std::size_t n = 0;
+  for (std::size_t end : {head, particles.size()}) {
+    for (; n < end; ++n) {
+      const Particle& p = particles[n];
+      const double w = weights[n];
+      const double d0 = p.x - r.x, d1 = p.vx - r.vx, d2 = p.y - r.y, d3 = p.vy - r.vy;
+      const double w0 = w * d0, w1 = w * d1, w2 = w * d2, w3 = w * d3;
+      total += w;
+      s0 += w0, s1 += w1, s2 += w2, s3 += w3;
+      s00 += w0 * d0, s01 += w0 * d1, s02 += w0 * d2, s03 += w0 * d3;
+      s11 += w1 * d1, s12 += w1 * d2, s13 += w1 * d3;
+      s22 += w2 * d2, s23 += w2 * d3, s33 += w3 * d3;
+    }
+    if (end == head && total > 0.0) {
+      head_mean.mass = total;
+      head_mean.mean = reference + Eigen::Vector4d(s0, s1, s2, s3) / total;
+    }
   }
   const double s[4] = {s0, s1, s2, s3};
   const double ss[10] = {s00, s01, s02, s03, s11, s12, s13, s22, s23, s33};
@@ -174,20 +193,7 @@ void weighted_moments(std::span<const Particle> particles, std::span<const doubl
       covariance(a, b) = covariance(b, a) = ss[k] / total - m[a] * m[b];
     }
   }
-  mean = m + Eigen::Vector4d(r.x, r.vx, r.y, r.vy);
-}
-
-void MomentAccumulator::add(const Particle& p) noexcept {
-  const Eigen::Vector4d v(p.x, p.vx, p.y, p.vy);
-  if (count_ == 0) {
-    reference_ = v;
-    sum_.setZero();
-    square_sum_.setZero();
-  }
-  const Eigen::Vector4d d = v - reference_;
-  sum_ += d;
-  square_sum_.noalias() += d * d.transpose();
-  ++count_;
+  mean = m + reference;
 }
 
 void MomentAccumulator::moments(Eigen::Vector4d& mean, Eigen::Matrix4d& covariance) const noexcept {
@@ -195,9 +201,15 @@ void MomentAccumulator::moments(Eigen::Vector4d& mean, Eigen::Matrix4d& covarian
   covariance.setZero();
   if (count_ == 0) return;
   const double n = static_cast<double>(count_);
-  const Eigen::Vector4d m = sum_ / n;
-  covariance = square_sum_ / n - m * m.transpose();
-  mean = m + reference_;
+  const Eigen::Vector4d m(s0_ / n, s1_ / n, s2_ / n, s3_ / n);
+  const double ss[10] = {s00_, s01_, s02_, s03_, s11_, s12_, s13_, s22_, s23_, s33_};
+  int k = 0;
+  for (int a = 0; a < 4; ++a) {
+    for (int b = a; b < 4; ++b, ++k) {
+      covariance(a, b) = covariance(b, a) = ss[k] / n - m[a] * m[b];
+    }
+  }
+  mean = m + Eigen::Vector4d(reference_.x, reference_.vx, reference_.y, reference_.vy);
 }
 
 void predict_moments(const ModelDynamics& d, Eigen::Vector4d& mean,

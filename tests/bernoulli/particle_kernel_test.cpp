@@ -238,6 +238,40 @@ TEST(BernoulliParticleKernel, PredictedMomentsAreThoseOfThePropagatedCloud) {
   }
 }
 
+TEST(BernoulliParticleKernel, WeightedMomentsGiveTheLeadingBlocksMean) {
+  // GIVEN a weighted cloud whose first 70 particles are survivors, the rest newborns
+  NormalSampler rng(8);
+  std::vector<Particle> cloud;
+  std::vector<double> weights;
+  double total = 0.0;
+  for (int k = 0; k < 100; ++k) {
+    cloud.push_back({15000.0 + 30.0 * rng.normal(), -8.0 + 10.0 * rng.normal(),
+                     20000.0 + 20.0 * rng.normal(),
+                     -400.0 + 6.0 * rng.normal() + (k < 70 ? 0 : 40)});
+    weights.push_back(0.5 + rng.uniform());
+    total += weights.back();
+  }
+  for (double& w : weights) w /= total;
+  // WHEN the moments are taken with the block's mean
+  Eigen::Vector4d mean, plain_mean;
+  Eigen::Matrix4d cov, plain_cov;
+  BlockMean head;
+  weighted_moments(cloud, weights, 70, mean, cov, head);
+  weighted_moments(cloud, weights, plain_mean, plain_cov);
+  // THEN the cloud's moments are the plain ones, bit for bit
+  EXPECT_EQ(mean, plain_mean);
+  EXPECT_EQ(cov, plain_cov);
+  // AND the block's mass and mean are its own
+  double mass = 0.0;
+  Eigen::Vector4d sum = Eigen::Vector4d::Zero();
+  for (int k = 0; k < 70; ++k) {
+    mass += weights[k];
+    sum += weights[k] * Eigen::Vector4d(cloud[k].x, cloud[k].vx, cloud[k].y, cloud[k].vy);
+  }
+  EXPECT_NEAR(head.mass, mass, 1e-12);
+  EXPECT_LT((head.mean - sum / mass).norm(), 1e-8);
+}
+
 TEST(BernoulliParticleKernel, VelocityGivenPositionIsThePosteriorMeanVelocity) {
   // GIVEN a Gaussian predicted cloud whose velocity depends on its position, weighted by a
   // likelihood of the position only (a plot 40 m east of the predicted mean, sigma 5 m)

@@ -54,10 +54,9 @@ class MmBernoulliFilter {
                             const std::array<double, kMaxModels>& mu_predicted,
                             const ModelDynamics& dynamics) noexcept;
   double likelihood_integral(int j, std::size_t survivors, std::size_t count) noexcept;
-  /// Model j's state estimate x_j of eq. 28 from its weighted cloud (`mean` its weighted
-  /// mean): the survivors' velocity conditioned on their posterior mean position.
-  Eigen::Vector4d model_estimate(int j, std::span<const Particle> cloud,
-                                 std::span<const double> weights,
+  /// Model j's state estimate x_j of eq. 28 from its weighted mean `mean` and its survivors'
+  /// weight and weighted mean: the survivors' velocity conditioned on their mean position.
+  Eigen::Vector4d model_estimate(int j, const BlockMean& survivors,
                                  const Eigen::Vector4d& mean) const noexcept;
   /// Eq. 26-28 and step 3(3): weights times l(x), model moments, resampling to N_j, output.
   void update_and_resample(const std::array<std::size_t, kMaxModels>& count, double dt,
@@ -78,7 +77,6 @@ class MmBernoulliFilter {
   std::array<std::size_t, kMaxModels> survivors_{};
   std::array<Eigen::Vector4d, kMaxModels> predicted_mean_{};
   std::array<Eigen::Matrix4d, kMaxModels> predicted_covariance_{};
-  MomentAccumulator parents_;
   double q_ = 0.0;
   bool has_posterior_ = false;
   ScanBook book_{1};

@@ -1,15 +1,19 @@
 // Paper 001's Monte Carlo experiment (§4): MMBPF with 300/700/700 and 1000/1000/1000
 // particles against the IMMBPF baseline with 1000 per model, on the simulated range/bearing
 // scenario of bernoulli/paper001_scenario.hpp. Prints Markdown: a summary per filter and the
-// per-scan position / velocity RMSE, mean existence probability and cardinality error.
+// per-scan position / velocity RMSE, mean existence probability and cardinality error, and
+// each MMBPF against the IMMBPF paired run by run (same plots).
 // Usage: skytrack-bernoulli-mc [--runs N] [--seed S] [--birth-scan B] [--death-scan D]
-//                              [--proposal prior|pairs] [--every K]
+//                              [--proposal prior|pairs] [--every K] [--filter-seed-offset F]
+//                              [--per-run FILE]
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -32,12 +36,19 @@ struct Options {
   int death_scan = 99;
   BirthProposal proposal = BirthProposal::kVelocityPrior;
   int every = 5;  // print every K-th scan of the per-scan table
+  // The filters' seed is the run's plus this: another offset draws the filters' own Monte
+  // Carlo noise afresh on the same plots.
+  std::uint64_t filter_seed_offset = 1000003;
+  std::string per_run;  // if set, one line per run and filter: seed, filter, ARMSEs, scans
 };
 
 struct FilterStats {  // sums over runs, per scan
   std::string name;
   std::vector<double> position_se, velocity_se, q_sum, cardinality_error;
-  std::vector<int> reported_present;        // runs reporting while the target exists
+  std::vector<int> reported_present;  // runs reporting while the target exists
+  // Per run: squared-error sums and the scans they cover, for the paired comparison.
+  std::vector<double> run_position_se, run_velocity_se;
+  std::vector<int> run_scans;
   double seconds = 0.0, cpu_seconds = 0.0;  // wall clock and this thread's CPU time
   int born_in_time = 0, died_in_time = 0;
   int false_reports = 0;  // (run, scan) reported while the target does not exist
@@ -65,6 +76,10 @@ Options parse(int argc, char** argv) {
       o.death_scan = std::atoi(value.c_str());
     else if (key == "--every")
       o.every = std::max(1, std::atoi(value.c_str()));
+    else if (key == "--filter-seed-offset")
+      o.filter_seed_offset = std::strtoull(value.c_str(), nullptr, 10);
+    else if (key == "--per-run")
+      o.per_run = value;
     else if (key == "--proposal") {
       o.proposal = value == "pairs" ? BirthProposal::kPlotPairs : BirthProposal::kVelocityPrior;
     } else {
@@ -90,6 +105,8 @@ void run_filter(Filter& filter, const std::vector<Paper001Scan>& scans, const Op
   stats.cpu_seconds += static_cast<double>(cpu_end.tv_sec - cpu_start.tv_sec) +
                        1e-9 * static_cast<double>(cpu_end.tv_nsec - cpu_start.tv_nsec);
   int first_report = -1, first_drop = -1;
+  double run_pse = 0.0, run_vse = 0.0;
+  int run_scans = 0;
   for (std::size_t k = 0; k < scans.size(); ++k) {
     const bool present = scans[k].target_present, reported = out[k].target_reported;
     stats.q_sum[k] += out[k].existence;
@@ -110,7 +127,13 @@ void run_filter(Filter& filter, const std::vector<Paper001Scan>& scans, const Op
     stats.position_se[k] += e[0] * e[0] + e[2] * e[2];
     stats.velocity_se[k] += e[1] * e[1] + e[3] * e[3];
     stats.reported_present[k] += 1;
+    run_pse += e[0] * e[0] + e[2] * e[2];
+    run_vse += e[1] * e[1] + e[3] * e[3];
+    ++run_scans;
   }
+  stats.run_position_se.push_back(run_pse);
+  stats.run_velocity_se.push_back(run_vse);
+  stats.run_scans.push_back(run_scans);
   if (first_report >= 0 && first_report <= o.birth_scan + 3) ++stats.born_in_time;
   if (first_drop >= 0 && first_drop <= o.death_scan + 3) ++stats.died_in_time;
 }
@@ -169,6 +192,71 @@ void print(const std::vector<FilterStats>& all, const Options& o, int scans) {
   }
 }
 
+/// Filter `a` against `b` on the same plots, per run: the mean of the paired difference of
+/// the per-run ARMSE (each run's RMSE over the scans it reports the target on) with its
+/// standard error sd / sqrt(runs), and the tables' pooled ARMSE as a relative difference with
+/// a bootstrap interval over runs (runs resampled with their pairs; fixed seed).
+void print_paired(const FilterStats& a, const FilterStats& b) {
+  std::vector<std::size_t> runs;
+  for (std::size_t r = 0; r < a.run_scans.size(); ++r) {
+    if (a.run_scans[r] > 0 && b.run_scans[r] > 0) runs.push_back(r);
+  }
+  const auto n = static_cast<double>(runs.size());
+  if (runs.size() < 2) return;
+  std::printf("| %s - %s | %zu |", a.name.c_str(), b.name.c_str(), runs.size());
+  const auto per_run = [](const std::vector<double>& se, const std::vector<int>& scans,
+                          std::size_t r) { return std::sqrt(se[r] / scans[r]); };
+  for (int v = 0; v < 2; ++v) {
+    const auto& sa = v == 0 ? a.run_position_se : a.run_velocity_se;
+    const auto& sb = v == 0 ? b.run_position_se : b.run_velocity_se;
+    double sum = 0.0, square = 0.0;
+    for (const std::size_t r : runs) {
+      const double d = per_run(sa, a.run_scans, r) - per_run(sb, b.run_scans, r);
+      sum += d;
+      square += d * d;
+    }
+    const double mean = sum / n, se = std::sqrt((square - n * mean * mean) / (n - 1.0) / n);
+    // Pooled: sqrt(sum se / sum scans) per filter, as the summary table.
+    const auto pooled = [&](const std::vector<std::size_t>& pick) {
+      double ea = 0, eb = 0, na = 0, nb = 0;
+      for (const std::size_t r : pick)
+        ea += sa[r], eb += sb[r], na += a.run_scans[r], nb += b.run_scans[r];
+      return 100.0 * (std::sqrt(ea / na) / std::sqrt(eb / nb) - 1.0);
+    };
+    std::mt19937_64 engine(12345);
+    std::uniform_int_distribution<std::size_t> draw(0, runs.size() - 1);
+    std::vector<double> boot;
+    std::vector<std::size_t> pick(runs.size());
+    for (int t = 0; t < 2000; ++t) {
+      for (std::size_t& p : pick) p = runs[draw(engine)];
+      boot.push_back(pooled(pick));
+    }
+    std::sort(boot.begin(), boot.end());
+    std::printf(" %+.3f +- %.3f [%+.3f, %+.3f] | %+.2f %% [%+.2f, %+.2f] |", mean, se,
+                mean - 1.96 * se, mean + 1.96 * se, pooled(runs), boot[50], boot[1949]);
+  }
+  std::printf("\n");
+}
+
+void write_per_run(const std::vector<FilterStats>& all, const Options& o) {
+  std::FILE* f = std::fopen(o.per_run.c_str(), "w");
+  if (f == nullptr) {
+    std::fprintf(stderr, "cannot write %s\n", o.per_run.c_str());
+    return;
+  }
+  std::fprintf(f, "# seed filter position_armse velocity_armse scans\n");
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const FilterStats& s = all[i];
+    for (std::size_t r = 0; r < s.run_scans.size(); ++r) {
+      const int n = s.run_scans[r];
+      std::fprintf(f, "%llu %zu %.6f %.6f %d\n", static_cast<unsigned long long>(o.seed + r), i,
+                   n > 0 ? std::sqrt(s.run_position_se[r] / n) : NAN,
+                   n > 0 ? std::sqrt(s.run_velocity_se[r] / n) : NAN, n);
+    }
+  }
+  std::fclose(f);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -186,7 +274,7 @@ int main(int argc, char** argv) {
   for (int run = 0; run < o.runs; ++run) {
     scenario.seed = o.seed + static_cast<std::uint64_t>(run);
     const std::vector<Paper001Scan> scans = simulate_paper001(scenario);
-    mm_cheap.seed = mm_even.seed = scenario.seed + 1000003;
+    mm_cheap.seed = mm_even.seed = scenario.seed + o.filter_seed_offset;
     MmBernoulliFilter cheap(mm_cheap);
     run_filter(cheap, scans, o, all[0]);
     MmBernoulliFilter even(mm_even);
@@ -199,5 +287,13 @@ int main(int argc, char** argv) {
               static_cast<unsigned long long>(o.seed + o.runs - 1), o.birth_scan, o.death_scan,
               o.proposal == BirthProposal::kPlotPairs ? "plot pairs" : "velocity prior");
   print(all, o, scenario.scans);
+  std::printf(
+      "\nPaired with the IMMBPF, run by run (same plots; runs where both report the target):"
+      " per-run ARMSE difference, mean +- standard error [95 %% interval], and the pooled"
+      " ARMSE's relative difference [bootstrap 95 %% interval over runs]:\n\n"
+      "| filters | runs | position [m] | pooled position | velocity [m/s] | pooled velocity |\n"
+      "|---|---|---|---|---|---|\n");
+  for (std::size_t i = 0; i + 1 < all.size(); ++i) print_paired(all[i], all.back());
+  if (!o.per_run.empty()) write_per_run(all, o);
   return 0;
 }
