@@ -131,10 +131,32 @@ void read_logging(YamlSection s, LogSettings& l, const std::string& base_dir) {
   s.finish();
 }
 
+void read_fusion(YamlSection s, FusionRole& f, const std::string& base_dir) {
+  s.text("config", f.config);
+  f.config = resolve(f.config, base_dir);
+  s.text("input_topic", f.input_topic);
+  s.text("output_topic", f.output_topic);
+  for (const auto* key : {"input_topic", "output_topic"}) {
+    const std::string& name = key[0] == 'i' ? f.input_topic : f.output_topic;
+    if (s.has(key) && name.empty()) s.error(key, "expected a non-empty topic name");
+  }
+  if (f.input_topic == f.output_topic) {
+    s.error("output_topic", "expected a topic other than input_topic ('" + f.input_topic +
+                                "'): the node would fuse its own output");
+  }
+  s.finish();
+}
+
 DaemonConfig read_config(const YAML::Node& root, ErrorList& errors, const std::string& base_dir) {
   DaemonConfig c;
   YamlSection top(root, "", errors);
   YamlSection d = top.section("skytrackd");
+  std::string role(to_string(c.role));
+  d.choice("role", role, {"tracker", "fusion"});
+  c.role = role == "fusion" ? Role::kFusion : Role::kTracker;
+  if (c.role == Role::kFusion && d.has("profile")) {
+    d.error("profile", "only used with role: tracker (the fusion role reads fusion.config)");
+  }
   d.text("instance", c.instance);
   if (d.has("instance") && c.instance.empty()) d.error("instance", "expected a non-empty name");
   d.text("profile", c.profile);
@@ -164,6 +186,13 @@ DaemonConfig read_config(const YAML::Node& root, ErrorList& errors, const std::s
   read_dds(top.section("dds"), c.dds);
   read_queue(top.section("queue"), c.queue);
   read_logging(top.section("logging"), c.logging, base_dir);
+  if (top.has("fusion") && c.role != Role::kFusion) {
+    top.error("fusion", "only used with skytrackd.role: fusion");
+  }
+  read_fusion(top.section("fusion"), c.fusion, base_dir);
+  if (c.role == Role::kFusion && c.input.mode != InputMode::kDds) {
+    top.error("input", "the fusion role takes TrackBatch over DDS only (input.from: dds)");
+  }
   top.finish();
   if (errors.empty() && c.dds.status.deadline <= c.status_period) {
     errors.add(root["dds"]["qos"]["status"]["deadline"], "dds.qos.status.deadline",
@@ -206,6 +235,10 @@ std::string_view to_string(InputMode value) {
       break;
   }
   return "dds";
+}
+
+std::string_view to_string(Role value) {
+  return value == Role::kFusion ? "fusion" : "tracker";
 }
 
 Expected<DaemonConfig> load_daemon_config(const std::string& path) {

@@ -112,6 +112,46 @@ TEST(DaemonConfig, FileSinkNeedsAFileAndConsoleTakesNone) {
   EXPECT_THAT(extra.error().message, HasSubstr("only used with sink: file"));
 }
 
+TEST(DaemonConfig, TheShippedTwoRadarDeploymentLoads) {
+  // GIVEN the shipped trackers' and fusion node's configurations WHEN loaded
+  for (const char* name : {"radar1", "radar2"}) {
+    const auto tracker = load_daemon_config(kSource + "/config/two-radars/" + name + ".yaml");
+    ASSERT_TRUE(tracker) << tracker.error().message;
+    EXPECT_EQ(tracker->role, Role::kTracker);
+    EXPECT_EQ(tracker->sensors.size(), 1u);
+  }
+  const auto node = load_daemon_config(kSource + "/config/two-radars/fusion.yaml");
+  ASSERT_TRUE(node) << node.error().message;
+  // THEN the node fuses the trackers' topic into its own, with the shipped fusion file
+  EXPECT_EQ(node->role, Role::kFusion);
+  EXPECT_EQ(node->sensors, (std::vector<std::int64_t>{1, 2}));
+  EXPECT_EQ(node->fusion.config, kSource + "/config/fusion.yaml");
+  EXPECT_EQ(node->fusion.input_topic, node->dds.topics.tracks);
+  EXPECT_EQ(node->fusion.output_topic, "skytrack_fused");
+}
+
+TEST(DaemonConfig, TheFusionRoleRefusesWhatOnlyATrackerTakes) {
+  const auto error_of = [](const std::string& yaml) {
+    const auto config = parse_daemon_config(yaml, "d.yaml", "/etc");
+    return config ? std::string("loaded") : config.error().message;
+  };
+  EXPECT_THAT(error_of("skytrackd: {role: fusion, profile: p.yaml}\n"),
+              HasSubstr("skytrackd.profile: only used with role: tracker"));
+  EXPECT_THAT(error_of("skytrackd: {role: fusion}\ninput: {from: asterix}\n"),
+              HasSubstr("input: the fusion role takes TrackBatch over DDS only"));
+  EXPECT_THAT(error_of("skytrackd: {role: fusion}\nfusion: {input_topic: a, output_topic: a}\n"),
+              HasSubstr("fusion.output_topic: expected a topic other than input_topic"));
+  EXPECT_THAT(error_of("fusion: {output_topic: b}\n"),
+              HasSubstr("fusion: only used with skytrackd.role: fusion"));
+  EXPECT_THAT(error_of("skytrackd: {role: fuser}\n"), HasSubstr("skytrackd.role"));
+  const auto node = parse_daemon_config(
+      "skytrackd: {role: fusion}\nfusion: {config: fusion.yaml, output_topic: f}\n", "d.yaml",
+      "/etc");
+  ASSERT_TRUE(node) << node.error().message;
+  EXPECT_EQ(node->fusion.config, "/etc/fusion.yaml");  // relative to the file
+  EXPECT_EQ(node->fusion.input_topic, "skytrack_tracks");
+}
+
 TEST(DaemonConfig, MissingFileAndSyntaxErrorsAreReported) {
   const auto missing = load_daemon_config("/nonexistent/skytrackd.yaml");
   ASSERT_FALSE(missing);

@@ -10,6 +10,7 @@
 #include <memory>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -28,8 +29,8 @@ using Clock = std::chrono::steady_clock;
 
 struct ReplayOptions {
   DdsToolOptions dds;
-  std::string plots;
-  std::string asterix;  // an ASTERIX recording instead of --plots
+  std::vector<std::string> plots;  // several: merged in time order
+  std::string asterix;             // an ASTERIX recording instead of --plots
   AsterixOptions asterix_options;
   std::string rate = "1";
   bool loop = false;
@@ -121,7 +122,7 @@ void Replayer::wait_in_flight(std::size_t limit) {
 
 bool Replayer::pass(double time_offset, std::uint64_t scan_offset) {
   auto reader = options_.asterix.empty()
-                    ? open_plot_stream(options_.plots)
+                    ? open_plot_streams(options_.plots)
                     : open_asterix_recording(options_.asterix, options_.asterix_options);
   if (!reader) {
     fmt::print(stderr, "skytrack replay: {}\n", reader.error().message);
@@ -256,7 +257,10 @@ int run_replay(const ReplayOptions& options) {
 void add_replay_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<ReplayOptions>();
   CLI::App* cmd = app.add_subcommand("replay", "Publish a plot stream as PlotBatch samples (DDS)");
-  auto* plots = cmd->add_option("--plots", options->plots, "Plot stream to publish (JSON Lines)");
+  auto* plots = cmd->add_option(
+      "--plots", options->plots,
+      "Plot stream to publish (JSON Lines); repeat for several sensors' streams, merged in "
+      "time order");
   auto* asterix = cmd->add_option("--asterix", options->asterix,
                                   "ASTERIX recording to publish (raw, pcap, pcapng), batched "
                                   "by --batch as import-asterix does");
@@ -275,6 +279,13 @@ void add_replay_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(1, 100000));
   cmd->add_flag("--quiet", options->quiet, "No progress bar");
   add_dds_options(*cmd, options->dds);
+  cmd->footer(
+      "Example: skytrack replay --config config/skytrackd.yaml --plots out/default.plots.jsonl "
+      "--rate max\nSeveral sensors: --plots radar1.plots.jsonl --plots radar2.plots.jsonl "
+      "(merged in time order)\nExit codes: 0 every scan published; 2 the configuration, DDS "
+      "or an input file failed; 3 no daemon's reader matched within --wait; 1xx command-line "
+      "mistakes (CLI11: 105 a bad value, 106 a required option missing, 109 an unknown "
+      "argument).");
   cmd->callback([options, &exit_code] {
     if (options->plots.empty() && options->asterix.empty()) {
       fmt::print(stderr, "skytrack replay: one of --plots or --asterix is required\n");

@@ -1,6 +1,7 @@
 #include "scan_source.hpp"
 
 #include <deque>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -66,7 +67,58 @@ class AsterixSource final : public ScanSource {
   bool finished_ = false;
 };
 
+/// Several plot streams (each a sensor's recording) as one, in time order; at equal times the
+/// earlier stream first, so a merge is deterministic.
+class MergedSource final : public ScanSource {
+ public:
+  explicit MergedSource(std::vector<std::unique_ptr<ScanSource>> sources)
+      : sources_(std::move(sources)), heads_(sources_.size()) {
+    for (std::size_t i = 0; i < sources_.size(); ++i) heads_[i] = sources_[i]->next();
+  }
+  std::optional<PlotScan> next() override {
+    std::size_t first = sources_.size();
+    for (std::size_t i = 0; i < heads_.size(); ++i) {
+      if (heads_[i] && (first == sources_.size() || heads_[i]->time < heads_[first]->time)) {
+        first = i;
+      }
+    }
+    if (first == sources_.size()) return std::nullopt;
+    std::optional<PlotScan> out = std::move(heads_[first]);
+    heads_[first] = sources_[first]->next();
+    return out;
+  }
+  std::size_t bytes_read() const override { return sum(&ScanSource::bytes_read); }
+  std::size_t file_size() const override { return sum(&ScanSource::file_size); }
+  std::size_t rejected() const override { return sum(&ScanSource::rejected); }
+  std::optional<std::string> read_error() const override {
+    for (const auto& source : sources_) {
+      if (auto error = source->read_error()) return error;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  std::size_t sum(std::size_t (ScanSource::*count)() const) const {
+    std::size_t total = 0;
+    for (const auto& source : sources_) total += (*source.*count)();
+    return total;
+  }
+  std::vector<std::unique_ptr<ScanSource>> sources_;
+  std::vector<std::optional<PlotScan>> heads_;
+};
+
 }  // namespace
+
+Expected<std::unique_ptr<ScanSource>> open_plot_streams(const std::vector<std::string>& paths) {
+  if (paths.size() == 1) return open_plot_stream(paths.front());
+  std::vector<std::unique_ptr<ScanSource>> sources;
+  for (const std::string& path : paths) {
+    auto source = open_plot_stream(path);
+    if (!source) return unexpected(source.error());
+    sources.push_back(std::move(*source));
+  }
+  return std::unique_ptr<ScanSource>(new MergedSource(std::move(sources)));
+}
 
 Expected<std::unique_ptr<ScanSource>> open_plot_stream(const std::string& path) {
   auto shown = std::make_shared<std::size_t>(0);

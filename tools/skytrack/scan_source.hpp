@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "asterix_options.hpp"
 #include "skytrack/core/expected.hpp"
@@ -26,6 +27,8 @@ class ScanSource {
 
 /// A plot stream; bad lines are printed (the first 20) and counted.
 Expected<std::unique_ptr<ScanSource>> open_plot_stream(const std::string& path);
+/// Several plot streams (one per sensor, say) merged in time order, ties in the given order.
+Expected<std::unique_ptr<ScanSource>> open_plot_streams(const std::vector<std::string>& paths);
 /// An ASTERIX recording; errors are printed with their offsets (the first 20) and counted.
 Expected<std::unique_ptr<ScanSource>> open_asterix_recording(const std::string& path,
                                                              const AsterixOptions& options);

@@ -82,10 +82,24 @@ struct InputSettings {
   bool udp() const { return mode != InputMode::kDds; }
 };
 
+enum class Role : std::uint8_t {
+  kTracker,  // PlotBatch in, the profile's Pipeline, TrackBatch out
+  kFusion,   // local trackers' TrackBatch in, the fused picture out (docs/fusion.md)
+};
+
+/// The fusion role's inputs and outputs; its parameters are in a fusion file, the one
+/// `skytrack fuse --config` reads, so the node and the offline tool fuse alike.
+struct FusionRole {
+  std::string config;                           // fusion file (resolved); empty: defaults
+  std::string input_topic = "skytrack_tracks";  // the local trackers' TrackBatch
+  std::string output_topic = "skytrack_fused";  // the fused TrackBatch
+};
+
 struct DaemonConfig {
+  Role role = Role::kTracker;
   std::string instance = "skytrackd";  // TrackerStatus key
   std::string profile;                 // profile path (resolved); empty: built-in default
-  std::vector<std::int64_t> sensors;   // accepted sensor ids; empty: any
+  std::vector<std::int64_t> sensors;   // accepted sensor ids (fusion: local trackers); empty: any
   int max_plots_per_scan = 100000;     // larger batches are rejected as absurd
   double status_period = 1.0;          // [s]
   // [s] batches dated further ahead of the host's UTC clock are refused; for sensors that
@@ -95,6 +109,7 @@ struct DaemonConfig {
   DdsSettings dds;
   QueueSettings queue;
   LogSettings logging;
+  FusionRole fusion;  // role: fusion only
 };
 
 /// Reads and validates a daemon configuration file. A relative `profile` or `logging.file`
@@ -110,5 +125,6 @@ std::string_view to_string(Reliability value);
 std::string_view to_string(Durability value);
 std::string_view to_string(OverloadPolicy value);
 std::string_view to_string(InputMode value);
+std::string_view to_string(Role value);
 
 }  // namespace skytrack::daemon
