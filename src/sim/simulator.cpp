@@ -7,6 +7,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "scenario_check.hpp"
 #include "skytrack/geometry/angles.hpp"
 #include "skytrack/geometry/frames.hpp"
 #include "skytrack/sim/random_targets.hpp"
@@ -27,37 +28,13 @@ Eigen::Matrix2d heading_rotation(const Eigen::Vector3d& velocity) {
   return r;
 }
 
-bool needs(const std::optional<double>& sigma) {
-  return sigma.has_value() && *sigma > 0.0;
-}
-
 }  // namespace
 
 Simulator::Simulator(Scenario scenario, std::uint64_t seed)
     : scenario_(std::move(scenario)), rng_(seed) {}
 
 Expected<Simulator> Simulator::create(Scenario scenario, std::uint64_t seed) {
-  const SensorSpec& sensor = scenario.sensor;
-  const bool three_d = scenario.dimensions == 3;
-  if (scenario.dimensions != 2 && scenario.dimensions != 3) {
-    return make_error("scenario.dimensions: expected 2 or 3");
-  }
-  if (!(sensor.scan_period > 0.0)) return make_error("sensor.scan_period: must be positive");
-  if (sensor.sectors < 1) return make_error("sensor.sectors: must be at least 1");
-  if (!(scenario.duration >= 0.0)) return make_error("scenario.duration: must be >= 0");
-  if (sensor.type == SensorSpec::Type::kPolar) {
-    if (!needs(sensor.sigma.range) || !needs(sensor.sigma.azimuth) ||
-        (three_d && sensor.elevation && !needs(sensor.sigma.elevation)) ||
-        (sensor.range_rate && !needs(sensor.sigma.range_rate))) {
-      return make_error("sensor.sigma: a polar sensor needs range, azimuth" +
-                        std::string(three_d && sensor.elevation ? ", elevation" : "") +
-                        (sensor.range_rate ? ", range_rate" : "") + " sigmas");
-    }
-  } else if (!needs(sensor.sigma.x) || !needs(sensor.sigma.y) ||
-             (three_d && !needs(sensor.sigma.z))) {
-    return make_error("sensor.sigma: a Cartesian sensor needs x, y" +
-                      std::string(three_d ? ", z" : "") + " sigmas");
-  }
+  if (auto valid = check_scenario(scenario); !valid) return unexpected(valid.error());
   if (auto added = add_random_targets(scenario, seed); !added) return unexpected(added.error());
   Simulator simulator(std::move(scenario), seed);
   if (auto built = simulator.build_targets(); !built) return unexpected(built.error());
