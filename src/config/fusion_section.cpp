@@ -73,14 +73,9 @@ Expected<fusion::FusionSpec> load_fusion_config(const std::string& path) {
 Expected<fusion::FusionSpec> parse_fusion_config(const std::string& yaml_text,
                                                  const std::string& name_for_messages) {
   ErrorList errors(name_for_messages);
-  YAML::Node node;
-  try {
-    node = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {  // same form as load_yaml_file
-    errors.add(YAML::Node(), "", "line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
-    return make_error(errors.joined());
-  }
-  return build(node, errors);
+  const auto node = parse_yaml_text(yaml_text, errors);
+  if (!node) return make_error(errors.joined());
+  return build(*node, errors);
 }
 
 }  // namespace skytrack::config

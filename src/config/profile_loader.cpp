@@ -76,14 +76,9 @@ Expected<TrackingProfile> load_profile(const std::string& path) {
 Expected<TrackingProfile> parse_profile(const std::string& yaml_text,
                                         const std::string& name_for_messages) {
   ErrorList errors(name_for_messages);
-  YAML::Node node;
-  try {
-    node = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {  // same form as load_yaml_file
-    errors.add(YAML::Node(), "", "line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
-    return make_error(errors.joined());
-  }
-  return build(node, errors);
+  const auto node = parse_yaml_text(yaml_text, errors);
+  if (!node) return make_error(errors.joined());
+  return build(*node, errors);
 }
 
 }  // namespace skytrack::config

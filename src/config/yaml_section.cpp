@@ -293,4 +293,13 @@ std::optional<YAML::Node> load_yaml_file(const std::string& path, ErrorList& err
   return std::nullopt;
 }
 
+std::optional<YAML::Node> parse_yaml_text(const std::string& text, ErrorList& errors) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    errors.add(YAML::Node(), "", "line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
+  }
+  return std::nullopt;
+}
+
 }  // namespace skytrack::config

@@ -168,17 +168,8 @@ void Daemon::start() {
 }
 
 void Daemon::publish_status() {
-  const TrackerStatusReport report =
-      impl_->status.snapshot(static_cast<std::uint32_t>(impl_->queue.size()));
-  auto sample = dds::to_dds(report);
-  if (!sample) {
-    spdlog::error("TrackerStatus not published: {}", sample.error().message);
-    return;
-  }
-  if (const dds_return_t rc = dds_write(impl_->status_writer, sample->data());
-      rc != DDS_RETCODE_OK) {
-    spdlog::error("TrackerStatus not published: {}", dds_strretcode(rc));
-  }
+  daemon::publish_status(impl_->status_writer,
+                         impl_->status.snapshot(static_cast<std::uint32_t>(impl_->queue.size())));
 }
 
 bool Daemon::reload_profile() {

@@ -253,14 +253,9 @@ Expected<DaemonConfig> parse_daemon_config(const std::string& yaml_text,
                                            const std::string& name_for_messages,
                                            const std::string& base_dir) {
   ErrorList errors(name_for_messages);
-  YAML::Node node;
-  try {
-    node = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    errors.add(YAML::Node(), "", "line " + std::to_string(e.mark.line + 1) + ": " + e.msg);
-    return make_error(errors.joined());
-  }
-  return build(node, errors, base_dir);
+  const auto node = config::parse_yaml_text(yaml_text, errors);
+  if (!node) return make_error(errors.joined());
+  return build(*node, errors, base_dir);
 }
 
 }  // namespace skytrack::daemon

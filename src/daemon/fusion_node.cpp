@@ -231,16 +231,7 @@ void FusionNode::start() {
 }
 
 void FusionNode::publish_status() {
-  const TrackerStatusReport report = impl_->status.snapshot(0);
-  auto sample = dds::to_dds(report);
-  if (!sample) {
-    spdlog::error("TrackerStatus not published: {}", sample.error().message);
-    return;
-  }
-  if (const dds_return_t rc = dds_write(impl_->status_writer, sample->data());
-      rc != DDS_RETCODE_OK) {
-    spdlog::error("TrackerStatus not published: {}", dds_strretcode(rc));
-  }
+  daemon::publish_status(impl_->status_writer, impl_->status.snapshot(0));
 }
 
 void FusionNode::stop() {

@@ -1,5 +1,9 @@
 #include "skytrack/daemon/status_collector.hpp"
 
+#include <spdlog/spdlog.h>
+
+#include "skytrack/dds/conversion.hpp"
+
 namespace skytrack::daemon {
 namespace {
 
@@ -68,6 +72,17 @@ TrackerStatusReport StatusCollector::snapshot(std::uint32_t queue_depth) const {
   out.latency_p99 = latency_.percentile(0.99);
   out.latency_max = latency_.max();
   return out;
+}
+
+void publish_status(dds_entity_t writer, const TrackerStatusReport& report) {
+  auto sample = dds::to_dds(report);
+  if (!sample) {
+    spdlog::error("TrackerStatus not published: {}", sample.error().message);
+    return;
+  }
+  if (const dds_return_t rc = dds_write(writer, sample->data()); rc != DDS_RETCODE_OK) {
+    spdlog::error("TrackerStatus not published: {}", dds_strretcode(rc));
+  }
 }
 
 }  // namespace skytrack::daemon

@@ -93,5 +93,7 @@ class YamlSection {
 
 /// Loads a YAML file; a syntax error is reported with its line.
 std::optional<YAML::Node> load_yaml_file(const std::string& path, ErrorList& errors);
+/// Parses YAML text; a syntax error is reported with its line, as load_yaml_file does.
+std::optional<YAML::Node> parse_yaml_text(const std::string& text, ErrorList& errors);
 
 }  // namespace skytrack::config

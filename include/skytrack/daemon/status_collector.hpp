@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include <dds/dds.h>
+
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/core/tracker_status.hpp"
 #include "skytrack/daemon/latency_stats.hpp"
@@ -39,5 +41,8 @@ class StatusCollector {
   std::map<std::string, std::uint64_t, std::less<>> scans_rejected_;
   LatencyStats latency_;
 };
+
+/// Writes `report` as one TrackerStatus sample on `writer`; a failure is logged, not thrown.
+void publish_status(dds_entity_t writer, const TrackerStatusReport& report);
 
 }  // namespace skytrack::daemon
