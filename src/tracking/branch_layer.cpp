@@ -117,6 +117,34 @@ std::vector<TrackEvent>& BranchLayer::events() {
   return look_->events;
 }
 
+const PointTrack* BranchLayer::stand_in(const PointTrack& father) const {
+  if (look_ == nullptr || father.life.consecutive_misses == 0) return nullptr;
+  const BranchNode* node = tree_.find(father.id);
+  if (node == nullptr) return nullptr;
+  // The prior that the target left the father's motion: the share of its IMM's other modes
+  // (none with one motion model: the profile says the targets do not manoeuvre).
+  const double onset = 1.0 - father.estimate.probabilities.maxCoeff();
+  const PointTrack* best = nullptr;
+  const auto consider = [&](std::int64_t id) {
+    const int t = store().slot(id);
+    if (t < 0) return;
+    const PointTrack& branch = store()[static_cast<std::size_t>(t)];
+    if (branch.coast_son() || branch.life.status == TrackStatus::kDeleted ||
+        branch.last_plot_batch != look_->batch ||
+        onset * branch.pair_probability <= (1.0 - onset) * (1.0 - branch.pair_probability)) {
+      return;
+    }
+    if (best == nullptr || branch.score > best->score) best = &branch;
+  };
+  for (const std::int64_t son : node->children) {
+    consider(son);
+    if (const BranchNode* s = tree_.find(son)) {
+      for (const std::int64_t grandson : s->children) consider(grandson);
+    }
+  }
+  return best;
+}
+
 void BranchLayer::before_gating() {
   manoeuvre_candidates_.clear();
   const std::size_t n = store().size();

@@ -39,6 +39,7 @@ void BranchLayer::update_branch(const BranchPair& pair, ScanReport& report) {
   branch.last_plot = pre().plots()[pair.plot];
   branch.last_plot_batch = look_->batch;
   branch.score += log_of(pair.probability);
+  branch.pair_probability = pair.probability;
   touched_[static_cast<std::size_t>(t)] = 1;
   look_->used_by_branch[pair.plot] = 1;
   const std::string plot = std::to_string(pre().plots()[pair.plot].plot_id);
@@ -139,6 +140,7 @@ void BranchLayer::create_branch(const BranchPair& pair, ScanReport& report, Trac
   branch.last_plot = plot;
   branch.last_plot_batch = look_->batch;
   branch.score = score;
+  branch.pair_probability = pair.probability;
   // A manoeuvre hypothesis: its parent's support and the prior of a manoeuvre begun since.
   branch.life.support = parent_support + std::log(kManoeuvreOnset);
   tree_.add_branch(branch.id, parent_id);

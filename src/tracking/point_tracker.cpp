@@ -102,7 +102,7 @@ void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame&
       store_[t].set_looked(pre.sensor(), pre.sweep());
     }
   }
-  TrackReporter::report(store_.all(), filter_, scan.time, report, frame);
+  TrackReporter::report(store_.all(), filter_, hooks, scan.time, report, frame);
   store_.erase_deleted();
   report.numeric_failures += look.numeric_failures;
   hooks.end();
@@ -112,7 +112,7 @@ void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame&
 void PointTracker::report_only(const PlotScan& scan, TrackFrame& frame, ScanReport& report) {
   TrackReporter::start_frame(scan, frame);
   report.plots = static_cast<int>(scan.plots.size());
-  TrackReporter::report(store_.all(), filter_, scan.time, report, frame);
+  TrackReporter::report(store_.all(), filter_, hooks(), scan.time, report, frame);
   store_.erase_deleted();
 }
 

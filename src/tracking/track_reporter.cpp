@@ -16,7 +16,8 @@ void TrackReporter::start_frame(const PlotScan& scan, TrackFrame& frame) {
 }
 
 void TrackReporter::report(const std::vector<PointTrack>& tracks, const ImmFilter& filter,
-                           double time, ScanReport& report, TrackFrame& frame) {
+                           const BranchHooks& hooks, double time, ScanReport& report,
+                           TrackFrame& frame) {
   const int dims = filter.layout().dims;
   const int n = 2 * dims;
   std::size_t reported = 0;
@@ -26,13 +27,29 @@ void TrackReporter::report(const std::vector<PointTrack>& tracks, const ImmFilte
       continue;
     }
     if (track.replaced) continue;  // its number lives on in the branch that replaced it
-    // A doomed father is not reported while it waits for a branch to replace it (an
-    // undecided one is).
-    if (track.doomed() && !track.undecided() && track.life.status != TrackStatus::kDeleted)
+    const auto at = [&](const ImmEstimate& e) {
+      return e.time < time ? filter.predict(e, time) : e;
+    };
+    ImmEstimate at_time = at(track.estimate);
+    Gaussian g = filter.combine(at_time);
+    TrackStatus status = track.life.status;
+    // A father that took no plot while a branch of its did (its sons decide) is reported,
+    // coasting, at that branch's estimate, with a covariance that still covers its own
+    // prediction (one sigma along the gap); without one, a father whose life gave it up
+    // waits unreported for a branch or a plot chain of its target.
+    const PointTrack* branch = hooks.stand_in(track);
+    if (branch == nullptr && track.doomed() && !track.undecided() &&
+        status != TrackStatus::kDeleted) {
       continue;
-    const ImmEstimate at_time =
-        track.estimate.time < time ? filter.predict(track.estimate, time) : track.estimate;
-    const Gaussian g = filter.combine(at_time);
+    }
+    if (branch != nullptr) {
+      const Eigen::VectorXd father_mean = g.mean;
+      at_time = at(branch->estimate);
+      g = filter.combine(at_time);
+      const Eigen::VectorXd gap = father_mean - g.mean;
+      g.covariance += gap * gap.transpose();
+      status = TrackStatus::kCoasting;
+    }
     // Written over the frame's earlier report in this place: its vectors keep their storage.
     TrackReport& out =
         reported < frame.tracks.size() ? frame.tracks[reported] : frame.tracks.emplace_back();
@@ -42,7 +59,7 @@ void TrackReporter::report(const std::vector<PointTrack>& tracks, const ImmFilte
     out.members.reset();
     out.modes.clear();
     out.id = track.id;
-    out.status = track.life.status;
+    out.status = status;
     out.dims = dims;
     out.position = position_of(g.mean, dims);
     out.velocity = velocity_of(g.mean, dims);
@@ -56,7 +73,7 @@ void TrackReporter::report(const std::vector<PointTrack>& tracks, const ImmFilte
       out.modes.emplace_back(names[m], at_time.probabilities[static_cast<Eigen::Index>(m)]);
     }
     out.quality = track.quality;
-    switch (track.life.status) {
+    switch (status) {
       case TrackStatus::kTentative:
         ++report.tentative;
         break;

@@ -62,6 +62,12 @@ class BranchHooks {
   virtual bool detected(int /*t*/, bool /*valid*/, bool plain) { return plain; }
   /// Its track life confirmed it.
   virtual void confirmed(int /*t*/) {}
+
+  // The look's report (track_reporter.hpp).
+  /// The branch whose estimate the report gives for `father` in this look: one of its sons
+  /// or grandsons that took a plot in this look while the father took none, likelier than
+  /// the father's own prediction; null if none.
+  virtual const PointTrack* stand_in(const PointTrack& /*father*/) const { return nullptr; }
 };
 
 }  // namespace skytrack

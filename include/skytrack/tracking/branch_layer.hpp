@@ -70,6 +70,10 @@ class BranchLayer final : public BranchHooks {
   void updated(PointTrack& track, bool valid) override;
   bool detected(int t, bool valid, bool plain) override;
   void confirmed(int t) override { confirmed_now_.push_back(t); }
+  /// The likeliest (highest score) son or grandson, coast sons aside, that took a plot in
+  /// this look while `father` took none, whose pair's probability beta outweighs the
+  /// father's IMM prior of a manoeuvre (onset x beta > (1 - onset) x (1 - beta)).
+  const PointTrack* stand_in(const PointTrack& father) const override;
 
  private:
   BranchLayer(const config::TrackingProfile& profile, ImmFilter manoeuvre,

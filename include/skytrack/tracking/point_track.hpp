@@ -72,8 +72,9 @@ struct PointTrack {
   std::optional<PlotMeasurement> first_plot;  // a branch's start plot (§1 (6)-(7))
   std::optional<PlotMeasurement> last_plot;   // the plot of its latest confirmed pair
   std::uint64_t last_plot_batch = 0;
-  double score = 0.0;     // a branch's summed log pair probabilities: the least likely is pruned
-  bool replaced = false;  // a father a branch replaced: dropped without a report
+  double score = 0.0;  // a branch's summed log pair probabilities: the least likely is pruned
+  double pair_probability = 0.0;  // a branch's latest pair's association probability
+  bool replaced = false;          // a father a branch replaced: dropped without a report
   FatherState state = FatherState::kActive;
   BranchOrigin origin = BranchOrigin::kManoeuvrePair;
   // Its estimate after its latest update with a valid association (a plot likelier than its
