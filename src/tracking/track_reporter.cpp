@@ -35,11 +35,12 @@ void TrackReporter::report(const std::vector<PointTrack>& tracks, const ImmFilte
     TrackStatus status = track.life.status;
     // A father that took no plot while a branch of its did (its sons decide) is reported,
     // coasting, at that branch's estimate, with a covariance that still covers its own
-    // prediction (one sigma along the gap); without one, a father whose life gave it up
-    // waits unreported for a branch or a plot chain of its target.
+    // prediction (one sigma along the gap). A father whose life gave it up (suspended) is
+    // reported only in a look it took a plot or a branch stands in: otherwise it waits,
+    // unreported, for a branch or a plot chain of its target.
     const PointTrack* branch = hooks.stand_in(track);
     if (branch == nullptr && track.doomed() && !track.undecided() &&
-        status != TrackStatus::kDeleted) {
+        status != TrackStatus::kDeleted && track.life.consecutive_misses > 0) {
       continue;
     }
     if (branch != nullptr) {
