@@ -1,7 +1,11 @@
 // Block resampling (Rebeschini & van Handel 2015, §2) for paper 001's step 3(3).
 #include "skytrack/bernoulli/block_resampling.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include <Eigen/LU>
 
 namespace skytrack::bernoulli {
 namespace {
@@ -23,6 +27,24 @@ void systematic_walk(std::span<const double> weights, double sum, double u0, std
 }
 
 }  // namespace
+
+double block_dependence(const ScanPlot& plot, const Eigen::Matrix4d& covariance) noexcept {
+  Eigen::Matrix4d r = Eigen::Matrix4d::Zero();  // [x, vx, y, vy] -> [a, v.along, c, v.across]
+  r(0, 0) = r(1, 1) = plot.along.x();
+  r(0, 2) = r(1, 3) = plot.along.y();
+  r(2, 0) = r(3, 1) = plot.across.x();
+  r(2, 2) = r(3, 3) = plot.across.y();
+  const Eigen::Matrix4d c = r * covariance * r.transpose();
+  const double joint = c.determinant();
+  const double along = c.topLeftCorner<2, 2>().determinant();
+  const double across = c.bottomRightCorner<2, 2>().determinant();
+  if (!(joint > 0.0) || !(along > 0.0) || !(across > 0.0)) {
+    return std::numeric_limits<double>::infinity();
+  }
+  const double dependence = 0.5 * std::log(along * across / joint);
+  return std::isfinite(dependence) ? std::max(dependence, 0.0)
+                                   : std::numeric_limits<double>::infinity();
+}
 
 bool block_resample(std::span<const Particle> cloud, const ScanPlot& plot, double u_along,
                     double u_across, std::span<double> scratch, std::span<Particle> out,

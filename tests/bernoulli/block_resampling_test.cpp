@@ -68,12 +68,13 @@ TEST(BlockResampling, EachBlockIsDrawnFromItsOwnFactor) {
   ASSERT_TRUE(make_cartesian_plot({5000.0, 8000.0}, 10.0, 1000.0, 1e-6, 50.0, plot));
   const std::vector<Particle> cloud = product_cloud(plot, {-40.0, 0.0, 40.0}, {-30.0, 0.0, 30.0});
   std::vector<double> scratch(2 * cloud.size());
-  std::vector<Particle> out(6);
+  std::vector<Particle> out(9);
   Eigen::Vector4d estimate;
-  // WHEN resampled into 6
+  // WHEN resampled into 9
   ASSERT_TRUE(block_resample(cloud, plot, 0.5, 0.5, scratch, out, estimate));
   // THEN every x is the middle one (the x factor picks it) while the y values, nearly flat
-  // under their factor, keep all three offsets, each velocity with its own block's position
+  // under their factor, keep all three offsets three times each (each particle once), each
+  // velocity with its own block's position
   std::vector<double> ys;
   for (const Particle& p : out) {
     EXPECT_NEAR(p.x, 5000.0, 1e-9);
@@ -83,7 +84,7 @@ TEST(BlockResampling, EachBlockIsDrawnFromItsOwnFactor) {
     ys.push_back(std::round(c));
   }
   std::sort(ys.begin(), ys.end());
-  EXPECT_EQ(std::unique(ys.begin(), ys.end()) - ys.begin(), 3);
+  EXPECT_EQ(ys, (std::vector<double>{-30, -30, -30, 0, 0, 0, 30, 30, 30}));
 }
 
 TEST(BlockResampling, NothingDoneWhenAFactorVanishes) {
@@ -98,6 +99,30 @@ TEST(BlockResampling, NothingDoneWhenAFactorVanishes) {
   EXPECT_FALSE(block_resample(cloud, plot, 0.5, 0.5, scratch, out, estimate));
   EXPECT_EQ(out[0].x, 1.0);
   EXPECT_EQ(estimate[0], 7.0);
+}
+
+TEST(BlockResampling, DependenceIsTheMutualInformationBetweenTheBlocks) {
+  // GIVEN a polar plot at azimuth 0.5 rad and covariances built in its frame [a, va, c, vc]
+  ScanPlot plot;
+  ASSERT_TRUE(make_polar_plot({0, 0}, 21000.0, 0.5, 5.0, 3e-3, kKappa, 50.0, plot));
+  Eigen::Matrix4d r = Eigen::Matrix4d::Zero();  // frame -> [x, vx, y, vy]
+  r(0, 0) = r(1, 1) = plot.along.x();
+  r(2, 0) = r(3, 1) = plot.along.y();
+  r(0, 2) = r(1, 3) = plot.across.x();
+  r(2, 2) = r(3, 3) = plot.across.y();
+  Eigen::Matrix4d frame;  // each block correlated within itself, none across
+  frame << 100.0, 40.0, 0.0, 0.0, 40.0, 64.0, 0.0, 0.0, 0.0, 0.0, 1600.0, 300.0, 0.0, 0.0, 300.0,
+      100.0;
+  // THEN blocks independent in the plot's frame: 0
+  EXPECT_NEAR(block_dependence(plot, r * frame * r.transpose()), 0.0, 1e-9);
+  // and a correlation rho = 0.6 between a and c: -1/2 log(1 - rho^2) (the within-block
+  // correlations are zero here so that it is the only canonical correlation)
+  frame.setZero();
+  frame.diagonal() << 100.0, 64.0, 1600.0, 100.0;
+  frame(0, 2) = frame(2, 0) = 0.6 * 10.0 * 40.0;
+  EXPECT_NEAR(block_dependence(plot, r * frame * r.transpose()), -0.5 * std::log(1.0 - 0.36), 1e-9);
+  // and a singular covariance: infinite
+  EXPECT_TRUE(std::isinf(block_dependence(plot, Eigen::Matrix4d::Zero())));
 }
 
 }  // namespace

@@ -23,6 +23,14 @@
 
 namespace skytrack::bernoulli {
 
+/// How far a density with this covariance [x, vx, y, vy] is from the product of its two
+/// blocks in the plot's frame: the mutual information [nats] between (a, v.along) and
+/// (c, v.across) of the Gaussian with it, -1/2 log(det C / (det C_along det C_across)), which
+/// is the Kullback-Leibler divergence of the product of the block marginals from the
+/// Gaussian; 0 for independent blocks, -1/2 log(1 - rho^2) for one correlation rho across.
+/// Infinite when the covariance is not positive definite.
+double block_dependence(const ScanPlot& plot, const Eigen::Matrix4d& covariance) noexcept;
+
 /// Resamples `cloud` (equal prior weights: one model's survivors) into all of `out`, the
 /// along block (a, v.along) by the factor N(a; 0, sigma_along^2) and the across block
 /// (c, v.across) by N(c; 0, sigma_across^2) of `plot`, each systematically (u_along,
