@@ -10,7 +10,7 @@
 // Cartesian plot: x and y). A constant-velocity model moves (a, v.along) and (c, v.across)
 // independently, with independent noise, so its state splits into an along block and an
 // across block, each informed by its own factor. Resampling the joint cloud by the product
-// of the factors lets the sharp one (5 m in range against the prediction's 10-12 m) pick
+// of the factors lets the sharp one (5 m in range against the CV prediction's 9 m) pick
 // particles at random in the other block, whose sample mean then drifts by var / ESS each
 // scan; the block filter resamples each block by its own factor, so the across block loses
 // only what the azimuth says. The two blocks are paired by output slot (the k-th draw of
