@@ -61,8 +61,9 @@ class MmBernoulliFilter {
   Eigen::Vector4d model_estimate(int j, const BlockMean& survivors,
                                  const Eigen::Vector4d& mean) const noexcept;
   /// Step 3(3) by blocks (block_resampling.hpp) when model j moves its blocks apart (CV), its
-  /// survivors carry the posterior and one plot explains their likelihood: resamples them into
-  /// posterior_[j] and gives x_j with their block mean as position. False: nothing done.
+  /// survivors carry the posterior, one plot explains their likelihood and the predicted
+  /// density is near the product of its blocks (kBlockShare, kBlockDependence): resamples them
+  /// into posterior_[j] and gives x_j with their block mean as position. False: nothing done.
   bool block_resample_model(int j, const BlockMean& survivors, const Eigen::Vector4d& mean,
                             Eigen::Vector4d& estimate) noexcept;
   /// Eq. 26-28 and step 3(3): weights times l(x), model moments, resampling to N_j, output.
