@@ -74,10 +74,12 @@ bool make_cartesian_plot(const Eigen::Vector2d& position, double sigma_x, double
   return true;
 }
 
-void accumulate_likelihood_ratios(std::span<const Particle> block, std::span<const ScanPlot> plots,
-                                  double gate_distance_squared,
-                                  std::span<double> ratio_sum) noexcept {
-  if (block.empty()) return;
+DominantPlot accumulate_likelihood_ratios(std::span<const Particle> block,
+                                          std::span<const ScanPlot> plots,
+                                          double gate_distance_squared,
+                                          std::span<double> ratio_sum) noexcept {
+  DominantPlot dominant;
+  if (block.empty()) return dominant;
   double x_min = block[0].x, x_max = block[0].x, y_min = block[0].y, y_max = block[0].y;
   for (const Particle& p : block) {
     x_min = std::min(x_min, p.x);
@@ -85,18 +87,25 @@ void accumulate_likelihood_ratios(std::span<const Particle> block, std::span<con
     y_min = std::min(y_min, p.y);
     y_max = std::max(y_max, p.y);
   }
-  for (const ScanPlot& plot : plots) {
+  for (std::size_t z = 0; z < plots.size(); ++z) {
+    const ScanPlot& plot = plots[z];
     if (plot.box[0] > x_max || plot.box[1] < x_min || plot.box[2] > y_max || plot.box[3] < y_min) {
       continue;
     }
+    double sum = 0.0;
     for (std::size_t n = 0; n < block.size(); ++n) {
       const Particle& p = block[n];
       if (p.x < plot.box[0] || p.x > plot.box[1] || p.y < plot.box[2] || p.y > plot.box[3]) {
         continue;
       }
-      ratio_sum[n] += plot_likelihood_ratio(plot, p.x, p.y, gate_distance_squared);
+      const double ratio = plot_likelihood_ratio(plot, p.x, p.y, gate_distance_squared);
+      ratio_sum[n] += ratio;
+      sum += ratio;
     }
+    dominant.total += sum;
+    if (sum > dominant.sum) dominant.sum = sum, dominant.index = z;
   }
+  return dominant;
 }
 
 ModelDynamics make_dynamics(const BernoulliModelSpec& model, double dt) noexcept {

@@ -1,6 +1,7 @@
 // Likelihood ratios, gating, dynamics, resampling and moments of the particle kernel.
 #include "skytrack/bernoulli/particle_kernel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -74,16 +75,26 @@ TEST(BernoulliParticleKernel, GatedAccumulationEqualsTheSumOverEveryPlot) {
     p.y = 15000.0 * std::cos(1.0) + 40.0 * rng.normal();
   }
   std::vector<double> gated(cloud.size(), 0.0);
-  accumulate_likelihood_ratios(cloud, plots, 50.0, gated);
+  const DominantPlot dominant = accumulate_likelihood_ratios(cloud, plots, 50.0, gated);
   double total = 0.0;
+  std::vector<double> per_plot(plots.size(), 0.0);
   for (std::size_t n = 0; n < cloud.size(); ++n) {
     double brute = 0.0;
-    for (const ScanPlot& plot : plots)
-      brute += plot_likelihood_ratio(plot, cloud[n].x, cloud[n].y, 50.0);
+    for (std::size_t z = 0; z < plots.size(); ++z) {
+      const double ratio = plot_likelihood_ratio(plots[z], cloud[n].x, cloud[n].y, 50.0);
+      brute += ratio;
+      per_plot[z] += ratio;
+    }
     EXPECT_NEAR(gated[n], brute, 1e-9 * (1.0 + brute));
     total += brute;
   }
   EXPECT_GT(total, 0.0);  // the test saw particles in a gate
+  // and the plot that contributes most, with its share of the block's sum
+  const auto largest = static_cast<std::size_t>(std::max_element(per_plot.begin(), per_plot.end()) -
+                                                per_plot.begin());
+  EXPECT_EQ(dominant.index, largest);
+  EXPECT_NEAR(dominant.sum, per_plot[largest], 1e-9 * per_plot[largest]);
+  EXPECT_NEAR(dominant.total, total, 1e-9 * total);
 }
 
 TEST(BernoulliParticleKernel, NoiseFreeDynamicsMatchTheCoordinatedTurnModel) {

@@ -6,11 +6,12 @@
 // models by the mixing probabilities (step 2, eq. 18-19) with no particle interaction,
 // predicted by the model, joined by birth particles from a proposal round the previous
 // scan's plots (eq. 22-23), weighted by l(x) (eq. 16, 26) and resampled back to its fixed
-// count (then regularised in velocity when its few lineages after a birth need it, see
-// regularise_velocity); the model probabilities come from each model's likelihood 1 - Delta (eq.
-// 17), and the output is the model-probability-weighted estimate (eq. 28), each model's velocity
-// conditioned on its posterior mean position (velocity_given_position). 2-D: state [x, vx, y,
-// vy] in the local ENU tracking frame. Deterministic for a seed.
+// count (block by block for the CV model when one plot explains its likelihood, see
+// block_resampling.hpp; then regularised in velocity when its few lineages after a birth need
+// it, see regularise_velocity); the model probabilities come from each model's likelihood 1 - Delta
+// (eq. 17), and the output is the model-probability-weighted estimate (eq. 28), each model's
+// velocity conditioned on its posterior mean position (velocity_given_position). 2-D: state [x, vx,
+// y, vy] in the local ENU tracking frame. Deterministic for a seed.
 #include <array>
 #include <span>
 #include <vector>
@@ -20,6 +21,7 @@
 #include "skytrack/bernoulli/bernoulli_estimate.hpp"
 #include "skytrack/bernoulli/bernoulli_spec.hpp"
 #include "skytrack/bernoulli/birth_proposal.hpp"
+#include "skytrack/bernoulli/block_resampling.hpp"
 #include "skytrack/bernoulli/normal_sampler.hpp"
 #include "skytrack/bernoulli/particle_kernel.hpp"
 #include "skytrack/bernoulli/plot_history.hpp"
@@ -58,6 +60,12 @@ class MmBernoulliFilter {
   /// weight and weighted mean: the survivors' velocity conditioned on their mean position.
   Eigen::Vector4d model_estimate(int j, const BlockMean& survivors,
                                  const Eigen::Vector4d& mean) const noexcept;
+  /// Step 3(3) by blocks (block_resampling.hpp) when model j moves its blocks apart (CV), its
+  /// survivors carry the posterior, one plot explains their likelihood and the predicted
+  /// density is near the product of its blocks (kBlockShare, kBlockDependence): resamples them
+  /// into posterior_[j] and gives x_j with their block mean as position. False: nothing done.
+  bool block_resample_model(int j, const BlockMean& survivors, const Eigen::Vector4d& mean,
+                            Eigen::Vector4d& estimate) noexcept;
   /// Eq. 26-28 and step 3(3): weights times l(x), model moments, resampling to N_j, output.
   void update_and_resample(const std::array<std::size_t, kMaxModels>& count, double dt,
                            BernoulliEstimate& estimate) noexcept;
@@ -75,6 +83,8 @@ class MmBernoulliFilter {
   // Per model this scan: its survivors' count and their predicted moments, exact from the
   // parents (the mixed particles before propagation) and the model's noise.
   std::array<std::size_t, kMaxModels> survivors_{};
+  std::array<DominantPlot, kMaxModels> dominant_{};  // of the survivors' likelihood
+  std::vector<double> block_scratch_;                // 2 N_j factor weights
   std::array<Eigen::Vector4d, kMaxModels> predicted_mean_{};
   std::array<Eigen::Matrix4d, kMaxModels> predicted_covariance_{};
   double q_ = 0.0;

@@ -84,11 +84,21 @@ inline double plot_likelihood_ratio(const ScanPlot& plot, double x, double y,
   return m < gate_distance_squared ? plot.peak_ratio * std::exp(-0.5 * m) : 0.0;
 }
 
+/// The plot with the largest share of a block's likelihood: sum_n g(z|x_n) / kappa(z) over
+/// the block for that plot and for all plots together.
+struct DominantPlot {
+  std::size_t index = 0;  // into the plots; meaningless while sum is 0
+  double sum = 0.0;
+  double total = 0.0;
+};
+
 /// Adds sum_z g(z|x_n) / kappa(z) to ratio_sum[n] for each particle of `block`; a plot whose
 /// gate box misses the block's bounding box is skipped without touching the particles.
-void accumulate_likelihood_ratios(std::span<const Particle> block, std::span<const ScanPlot> plots,
-                                  double gate_distance_squared,
-                                  std::span<double> ratio_sum) noexcept;
+/// Returns the plot that contributed most (to the block's sum of ratios).
+DominantPlot accumulate_likelihood_ratios(std::span<const Particle> block,
+                                          std::span<const ScanPlot> plots,
+                                          double gate_distance_squared,
+                                          std::span<double> ratio_sum) noexcept;
 
 /// One model's transition over dt: x' = F x + G a, G = [dt^2/2, dt] per axis (see
 /// BernoulliModelSpec), F the CV or CT matrix of the paper's §4.
