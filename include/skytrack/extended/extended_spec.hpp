@@ -68,6 +68,10 @@ struct MemEkfSpec {
   double axis_noise = 1.0;               // [m^2 per scan] process noise of each semi-axis
   double initial_orientation_var = 0.5;  // [rad^2]
   double initial_axis_var = 2500.0;      // [m^2]
+  /// After a scan's update each semi-axis is capped by the spread of that scan's plots along
+  /// it (at least 3 plots): u'Xu <= 4 (T_u / chi^2_{n-1} - u'Ru), chi^2_{n-1} its lower
+  /// quantile at this many standard normal deviates (2.33: 1 %); 0 = no cap (mem_ekf.cpp).
+  double spread_bound_sigmas = 2.33;
   bool operator==(const MemEkfSpec&) const = default;
 };
 
