@@ -102,6 +102,13 @@ struct ExtendedSpec {
   /// [m] floor of a new track's semi-axes, and of the semi-axes association uses (gate,
   /// split of a shared partition), so a collapsed estimate does not shrink the gate.
   double initial_extent_axis = 50.0;
+  /// An established confirmed track (plots in at least `established_hits` scans) that shared
+  /// no partition with another track in any of its misses is deleted after
+  /// `established_delete_misses` instead of `delete_misses`: its object unseen a while, not
+  /// lost to a neighbour. The default, equal to delete_misses, makes no exception
+  /// (docs/extended.md: 10 / 5 measured, fewer number changes, more false tracks).
+  int established_hits = 10;
+  int established_delete_misses = 3;
   bool operator==(const ExtendedSpec&) const = default;
 };
 
