@@ -180,6 +180,7 @@ void read_extended(YamlSection s, TrackingProfile& p) {
   mem.number("axis_noise", e.mem_ekf.axis_noise, Range{0.0, 1e8});
   mem.number("initial_orientation_var", e.mem_ekf.initial_orientation_var, Range{1e-6, 10.0});
   mem.number("initial_axis_var", e.mem_ekf.initial_axis_var, Range{1e-3, 1e10});
+  mem.number("spread_bound_sigmas", e.mem_ekf.spread_bound_sigmas, Range{0.0, 10.0});
   mem.finish();
   s.number("partition_distance", e.partition_distance, Range{1e-3, 1e6});
   s.number("gate", e.gate, Range{1e-3, 1e4});
@@ -188,6 +189,8 @@ void read_extended(YamlSection s, TrackingProfile& p) {
   s.integer("confirm_hits", e.confirm_hits, Range{1.0, 1000.0});
   s.integer("tentative_max_misses", e.tentative_max_misses, Range{1.0, 1000.0});
   s.integer("delete_misses", e.delete_misses, Range{1.0, 1000.0});
+  s.integer("established_hits", e.established_hits, Range{1.0, 1e6});
+  s.integer("established_delete_misses", e.established_delete_misses, Range{1.0, 1000.0});
   s.number("initial_speed_sigma", e.initial_speed_sigma, Range{1e-3, kMaxSpeed});
   s.number("initial_accel_sigma", e.initial_accel_sigma, Range{1e-3, kMaxAccel});
   s.number("initial_extent_axis", e.initial_extent_axis, Range{1e-3, 1e5});

@@ -125,6 +125,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
                                 ExtendedScanReport& report) {
   const int track_count = static_cast<int>(tracks_.size());
   track_plots_.resize(track_count);
+  shared_.assign(track_count, 0);
   for (std::vector<int>& plots : track_plots_) plots.clear();
   std::vector<const std::vector<int>*>& unassigned = unassigned_;
   unassigned.clear();
@@ -162,6 +163,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
       }
       continue;
     }
+    for (const Gated& g : gated_) shared_[g.track] = 1;
     if (crossing_unresolved()) {
       for (const Gated& g : gated_) tracks_[g.track].unresolved = true;
       continue;
@@ -255,24 +257,32 @@ void ExtendedTracker::initiate(const std::vector<int>& group, ExtendedScanReport
 
 void ExtendedTracker::manage(ExtendedScanReport& report) {
   const std::uint64_t first_new = next_id_ - static_cast<std::uint64_t>(report.initiated);
-  for (ExtendedTrack& track : tracks_) {
+  for (int t = 0; t < static_cast<int>(tracks_.size()); ++t) {
+    ExtendedTrack& track = tracks_[t];
     if (track.id >= first_new) continue;  // born this scan
     if (track.plots > 0) {
       ++track.hits;
       track.misses = 0;
+      track.unseen_misses = 0;
       if (track.status == ExtendedTrackStatus::kTentative && track.hits >= spec_.confirm_hits) {
         track.status = ExtendedTrackStatus::kConfirmed;
         ++report.confirmed;
       }
     } else if (!track.unresolved) {
       ++track.misses;
+      track.unseen_misses += !shared_[t];
     }
   }
   // A tentative track whose centre lies inside an older track's ellipse duplicates it.
   auto lost = [this](const ExtendedTrack& track) {
     if (!track.object.x.allFinite() || !track.object.extent.allFinite()) return true;
-    const int limit = track.status == ExtendedTrackStatus::kConfirmed ? spec_.delete_misses
-                                                                      : spec_.tentative_max_misses;
+    // An established track that missed only scans in which it shared no partition lost sight
+    // of its object (a run of non-detections, (1 - P_D)^m): it coasts longer. One that missed
+    // while sharing a partition may have lost its object to a neighbour: the usual count.
+    const bool unseen = track.hits >= spec_.established_hits && track.unseen_misses == track.misses;
+    const int limit = track.status != ExtendedTrackStatus::kConfirmed ? spec_.tentative_max_misses
+                      : unseen ? spec_.established_delete_misses
+                               : spec_.delete_misses;
     if (track.misses >= limit) return true;
     if (track.status != ExtendedTrackStatus::kTentative) return false;
     for (const ExtendedTrack& other : tracks_) {

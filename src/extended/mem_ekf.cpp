@@ -1,6 +1,7 @@
 // MEM-EKF*, Yang & Baum 2019, Table I (see mem_ekf.hpp).
 #include "skytrack/extended/mem_ekf.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <Eigen/Cholesky>
@@ -13,6 +14,41 @@ Eigen::Matrix2d shape_root(const Eigen::Vector3d& p) {
   Eigen::Matrix2d S;
   S << p[1] * c, -p[2] * s, p[1] * s, p[2] * c;
   return S;
+}
+
+// The (1 - Phi(z)) lower quantile of chi^2 with nu degrees of freedom, Wilson & Hilferty's
+// cube-root approximation (0 when it has none: nu too small for the confidence).
+double chi_squared_lower_quantile(int nu, double z) {
+  const double v = 2.0 / (9.0 * nu);
+  const double root = 1.0 - v - z * std::sqrt(v);
+  return root > 0.0 ? nu * root * root * root : 0.0;
+}
+
+// Bound of the semi-axes by the scan's plots (not in Yang & Baum): n scatterers uniform over
+// the object's ellipse plus noise R spread along a unit direction u with variance
+// u'(X/4 + R)u, so from the plots' sum of squares T_u = sum (u'(z - zbar))^2 about their mean,
+// u'Xu <= 4 (T_u / chi^2_{n-1, lower} - u'Ru) at the confidence of `sigmas` (conservative:
+// the projection of a uniform ellipse has lighter tails than a Gaussian). Applied along the
+// estimate's two axes, it caps a semi-axis grown by an innovation the plots' own spread does
+// not show: the centre's error read as extent.
+void bound_by_spread(double sigmas, std::span<const Eigen::Vector2d> plots,
+                     const Eigen::Matrix2d& noise, Eigen::Vector3d& p) {
+  const int n = static_cast<int>(plots.size());
+  if (!(sigmas > 0.0) || n < 3) return;
+  const double q = chi_squared_lower_quantile(n - 1, sigmas);
+  if (!(q > 0.0)) return;
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (const Eigen::Vector2d& z : plots) mean += z;
+  mean /= static_cast<double>(n);
+  Eigen::Matrix2d T = Eigen::Matrix2d::Zero();
+  for (const Eigen::Vector2d& z : plots) T.noalias() += (z - mean) * (z - mean).transpose();
+  const double c = std::cos(p[0]), s = std::sin(p[0]);
+  const Eigen::Vector2d axes[2] = {{c, s}, {-s, c}};
+  for (int i = 0; i < 2; ++i) {
+    const Eigen::Vector2d& u = axes[i];
+    const double bound = 2.0 * std::sqrt(std::max(u.dot(T * u) / q - u.dot(noise * u), 0.0));
+    if (std::abs(p[1 + i]) > bound) p[1 + i] = std::copysign(bound, p[1 + i]);
+  }
 }
 
 }  // namespace
@@ -90,6 +126,7 @@ UpdateStatus mem_ekf_update(const MemEkfSpec& spec, ExtendedObject& object,
     object.shape_cov -= C_pY * ldlt_Y.solve(C_pY.transpose());
     object.shape_cov = 0.5 * (object.shape_cov + object.shape_cov.transpose()).eval();
   }
+  bound_by_spread(spec.spread_bound_sigmas, plots, noise, object.shape);
   object.extent = mem_ekf_extent(object.shape);
   return status;
 }

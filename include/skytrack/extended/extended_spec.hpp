@@ -68,6 +68,10 @@ struct MemEkfSpec {
   double axis_noise = 1.0;               // [m^2 per scan] process noise of each semi-axis
   double initial_orientation_var = 0.5;  // [rad^2]
   double initial_axis_var = 2500.0;      // [m^2]
+  /// After a scan's update each semi-axis is capped by the spread of that scan's plots along
+  /// it (at least 3 plots): u'Xu <= 4 (T_u / chi^2_{n-1} - u'Ru), chi^2_{n-1} its lower
+  /// quantile at this many standard normal deviates (2.33: 1 %); 0 = no cap (mem_ekf.cpp).
+  double spread_bound_sigmas = 2.33;
   bool operator==(const MemEkfSpec&) const = default;
 };
 
@@ -98,6 +102,13 @@ struct ExtendedSpec {
   /// [m] floor of a new track's semi-axes, and of the semi-axes association uses (gate,
   /// split of a shared partition), so a collapsed estimate does not shrink the gate.
   double initial_extent_axis = 50.0;
+  /// An established confirmed track (plots in at least `established_hits` scans) that shared
+  /// no partition with another track in any of its misses is deleted after
+  /// `established_delete_misses` instead of `delete_misses`: its object unseen a while, not
+  /// lost to a neighbour. The default, equal to delete_misses, makes no exception
+  /// (docs/extended.md: 10 / 5 measured, fewer number changes, more false tracks).
+  int established_hits = 10;
+  int established_delete_misses = 3;
   bool operator==(const ExtendedSpec&) const = default;
 };
 

@@ -36,6 +36,9 @@ struct ExtendedTrack {
   /// In the last scan it shared a partition with a crossing neighbour it could not be told
   /// from, and coasted on its prediction: not a miss.
   bool unresolved = false;
+  /// Of its misses, scans in which it shared no partition with another track: its object
+  /// unseen, not its plots gone to a neighbour (ExtendedSpec::established_delete_misses).
+  int unseen_misses = 0;
   double birth_variance = 0.0;  // [m^2] its first centre's variance per axis
 
   Eigen::Vector2d position() const { return object.position(); }   // [m] centre
@@ -116,6 +119,8 @@ class ExtendedTracker {
   std::vector<const std::vector<int>*> unassigned_;
   std::vector<Eigen::Vector2d> plane_positions_;  // PlotMeasurements in the tracking plane
   std::vector<Eigen::Matrix2d> plane_noises_;
+  /// Per track, it gated a partition with another track this scan.
+  std::vector<char> shared_;
 };
 
 }  // namespace skytrack::extended

@@ -10,6 +10,8 @@
 //   M = [2 S1 C_h J1; 2 S2 C_h J2; S1 C_h J2 + S2 C_h J1], C_pY = C_p M',
 //   C_Y = F (C_y (x) C_y)(F + F~)', p += C_pY C_Y^-1 (Y - Ybar), C_p -= C_pY C_Y^-1 C_pY'.
 // The extent is X = S S' = R(alpha) diag(l1^2, l2^2) R(alpha)'.
+// Not in the paper: after a scan's plots each semi-axis is capped by their spread along it
+// (MemEkfSpec::spread_bound_sigmas, mem_ekf.cpp), so a centre error is not read as extent.
 #include <span>
 
 #include "skytrack/extended/extended_object.hpp"
