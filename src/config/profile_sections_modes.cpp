@@ -168,6 +168,8 @@ void read_extended(YamlSection s, TrackingProfile& p) {
   smf.integer("boundary_points", e.smf.boundary_points, Range{4.0, 1024.0});
   smf.number("extent_gain", e.smf.extent_gain, Range{0.0, 1.0, true, false});
   smf.number("min_axis", e.smf.min_axis, Range{1e-3, 1e5});
+  smf.number("outlier_margin", e.smf.outlier_margin, Range{0.0, 100.0});
+  smf.number("outlier_min_axis", e.smf.outlier_min_axis, Range{0.0, 1e5});
   smf.finish();
   YamlSection rm = s.section("random_matrix");
   rm.number("scattering", e.random_matrix.scattering, Range{1e-3, 10.0});

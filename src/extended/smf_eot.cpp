@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 
 #include "skytrack/extended/ellipse_geometry.hpp"
 
@@ -15,6 +16,31 @@ Eigen::Matrix2d floor_axes(const Eigen::Matrix2d& shape, double min_axis) {
   const EllipseAxes axes = ellipse_axes(shape);
   return shape_from_axes(std::max(axes.major, min_axis), std::max(axes.minor, min_axis),
                          axes.orientation);
+}
+
+// The scan's plots that can be one object's (not in paper 002): two plots of an object with
+// semi-axes a and noise in E(0, U) lie at most 2 a + 2 u apart (u: U's major semi-axis). With
+// a the predicted major semi-axis (floored) times `outlier_margin`, a plot farther than that
+// from at least half of the scan's plots (itself included) is a stray: clutter or a
+// neighbour's plot. All plots when fewer than two remain or the margin is 0.
+std::span<const Eigen::Vector2d> consistent_plots(const SmfSpec& spec, const ExtendedObject& object,
+                                                  std::span<const Eigen::Vector2d> plots,
+                                                  const Eigen::Matrix2d& bound,
+                                                  std::vector<Eigen::Vector2d>& kept) {
+  if (!(spec.outlier_margin > 0.0) || plots.size() < 3) return plots;
+  const double a = std::max(ellipse_axes(object.extent).major, spec.outlier_min_axis);
+  const double u =
+      std::sqrt(std::max(bound.selfadjointView<Eigen::Lower>().eigenvalues().maxCoeff(), 0.0));
+  const double reach = 2.0 * spec.outlier_margin * a + 2.0 * u;
+  const std::size_t needed = (plots.size() + 1) / 2;
+  kept.clear();
+  for (const Eigen::Vector2d& z : plots) {
+    std::size_t near = 0;
+    for (const Eigen::Vector2d& w : plots) near += (z - w).norm() <= reach ? 1 : 0;
+    if (near >= needed) kept.push_back(z);
+  }
+  if (kept.size() < 2) return plots;
+  return kept;
 }
 
 }  // namespace
@@ -61,6 +87,7 @@ UpdateStatus smf_update(const SmfSpec& spec, ExtendedObject& object,
                         std::span<const Eigen::Vector2d> plots, const Eigen::Matrix2d& bound,
                         SmfWorkspace& workspace) noexcept {
   if (plots.empty()) return UpdateStatus::kNoPlots;
+  plots = consistent_plots(spec, object, plots, bound, workspace.kept);
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const Eigen::Vector2d& z : plots) mean += z;
   mean /= static_cast<double>(plots.size());

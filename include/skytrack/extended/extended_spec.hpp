@@ -51,6 +51,12 @@ struct SmfSpec {
   /// instead of our reading (smf_eot.hpp); for the comparison in docs/extended.md only.
   bool literal_extent = false;
   double min_axis = 1.0;  // [m] floor of an estimated semi-axis (empty Minkowski difference)
+  /// Two plots of one object lie at most 2 a + 2 u apart (a its major semi-axis, u the noise
+  /// bound's). A plot farther than 2 m a + 2 u, m this margin and a the predicted one, from
+  /// at least half of the scan's plots leaves the update (smf_eot.cpp); 0 = all plots.
+  /// The margin covers the hull's inner estimate of a on few plots.
+  double outlier_margin = 2.0;
+  double outlier_min_axis = 50.0;  // [m] floor of that a (an extent collapsed on few plots)
   bool operator==(const SmfSpec&) const = default;
 };
 

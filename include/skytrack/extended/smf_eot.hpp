@@ -15,6 +15,9 @@
 // ellipse is that (-) U. The paper subtracts only Omega's (1 + 1/p) H S H' term, then U,
 // and divides by lambda, which leaves lambda X_pred and U inside the result. Every plot
 // bound is a Minkowski-sum bound of least trace (Theorems 3-4).
+// Not in the paper: before the update, plots farther from most of the scan's plots than the
+// object's predicted diameter (times a margin) plus the noise leave the update, centre and
+// hull (SmfSpec::outlier_margin, smf_eot.cpp), so a stray plot does not grow the hull.
 #include <span>
 #include <vector>
 
@@ -26,12 +29,15 @@ namespace skytrack::extended {
 struct SmfWorkspace {
   std::vector<Eigen::Vector2d> boundary;
   std::vector<Eigen::Vector2d> hull;
+  std::vector<Eigen::Vector2d> kept;  // the plots consistent with one object
+  std::vector<Eigen::Vector2d> inliers;
 };
 
 void smf_predict(const MotionSpec& motion, ExtendedObject& object, double dt) noexcept;
 
 /// `bound` is the sensor's noise bound U (shape matrix [m^2]): each plot's noise lies in
-/// E(0, U). Non-finite plots must have been dropped by the caller.
+/// E(0, U). Non-finite plots must have been dropped by the caller. Plots inconsistent with
+/// one object (SmfSpec::outlier_margin) are left out.
 UpdateStatus smf_update(const SmfSpec& spec, ExtendedObject& object,
                         std::span<const Eigen::Vector2d> plots, const Eigen::Matrix2d& bound,
                         SmfWorkspace& workspace) noexcept;
