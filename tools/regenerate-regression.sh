@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Rewrites the replay regression's expected digests (tests/regression/expected) from the
-# current build, on purpose: after a change meant to alter the tracks, run this, read the
-# diff, and say why in the commit. Builds the regression test first.
+# Rewrites the replay regression's expected digests (tests/regression/expected) that differ
+# from the current build beyond the test's tolerance (1e-9), on purpose: after a change meant
+# to alter the tracks, run this, read the diff, and say why in the commit. Builds the
+# regression test first.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=${SKYTRACK_BUILD_DIR:-$root/build}

@@ -122,30 +122,45 @@ std::string run(const Case& c) {
   return out.str();
 }
 
+/// The first difference between the committed digest and this run's beyond the tolerance
+/// (frame and line: where the behaviour changed), or empty.
+std::string first_difference(const Case& c, const std::string& expected,
+                             const std::string& actual) {
+  const auto want = lines_of(expected), got = lines_of(actual);
+  std::string frame;
+  for (std::size_t i = 0; i < std::min(want.size(), got.size()); ++i) {
+    if (want[i].starts_with("F ")) frame = want[i];
+    if (const std::string why = difference(want[i], got[i]); !why.empty()) {
+      return std::string(c.scenario) + " x " + c.profile + ", line " + std::to_string(i + 1) +
+             " (frame '" + frame + "'): " + why + "\n  expected: " + want[i] +
+             "\n  got:      " + got[i];
+    }
+  }
+  if (got.size() != want.size()) {
+    return std::string(c.scenario) + " x " + c.profile + ": " + std::to_string(got.size()) +
+           " lines, expected " + std::to_string(want.size());
+  }
+  return {};
+}
+
 class ReplayRegression : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ReplayRegression, TracksEqualTheCommittedDigest) {
   const Case& c = GetParam();
   const std::string actual = run(c);
   const std::string path = expected_path(c);
-  if (std::getenv("SKYTRACK_REGENERATE_REGRESSION") != nullptr) {
-    std::ofstream(path) << actual;
-    GTEST_SKIP() << "regenerated " << path;
-  }
   std::ifstream file(path);
-  ASSERT_TRUE(file) << path << " missing: tools/regenerate-regression.sh writes it";
-  const std::string expected{std::istreambuf_iterator<char>(file), {}};
-  const auto want = lines_of(expected), got = lines_of(actual);
-  // The first difference says where the behaviour changed: frame and line.
-  std::string frame;
-  for (std::size_t i = 0; i < std::min(want.size(), got.size()); ++i) {
-    if (want[i].starts_with("F ")) frame = want[i];
-    const std::string why = difference(want[i], got[i]);
-    ASSERT_TRUE(why.empty()) << c.scenario << " x " << c.profile << ", line " << i + 1
-                             << " (frame '" << frame << "'): " << why << "\n  expected: " << want[i]
-                             << "\n  got:      " << got[i];
+  const std::string expected =
+      file ? std::string{std::istreambuf_iterator<char>(file), {}} : std::string();
+  const std::string why = file ? first_difference(c, expected, actual) : "missing";
+  // Regeneration rewrites only the digests that differ beyond the tolerance, so a change
+  // touches no run it leaves alone (the last digits of a float may move between builds).
+  if (std::getenv("SKYTRACK_REGENERATE_REGRESSION") != nullptr) {
+    if (!why.empty()) std::ofstream(path) << actual;
+    GTEST_SKIP() << (why.empty() ? "unchanged " : "regenerated ") << path;
   }
-  ASSERT_EQ(got.size(), want.size()) << c.scenario << " x " << c.profile;
+  ASSERT_TRUE(file) << path << " missing: tools/regenerate-regression.sh writes it";
+  EXPECT_TRUE(why.empty()) << why;
 }
 
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {
