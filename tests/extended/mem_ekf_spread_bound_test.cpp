@@ -27,25 +27,35 @@ std::vector<Eigen::Vector2d> object_plots(const Eigen::Vector2d& centre, double 
   return plots;
 }
 
-// A new track 150 m behind a 100 m x 25 m object (the displacement of 15 m/s over a scan),
-// its prior extent a 50 m circle, updated with `scans` scans of 8 plots.
-EllipseAxes axes_after_offset_scans(double spread_bound_sigmas, int scans) {
+// A track at the origin with kinematic covariance `P_diagonal` and shape `shape`, updated with
+// `scans` scans of `n` plots of a 100 m x 25 m object centred at `centre` (plot noise 5 m).
+ExtendedObject updated_track(double spread_bound_sigmas, const KinVec& P_diagonal,
+                             const Eigen::Vector3d& shape, const Eigen::Vector2d& centre, int n,
+                             int scans, std::uint64_t seed) {
   MemEkfSpec spec;
   spec.spread_bound_sigmas = spread_bound_sigmas;
   ExtendedObject object;
   object.x = KinVec::Zero();
-  object.P = KinVec(400.0, 100.0, 400.0, 100.0, 0.25, 0.25).asDiagonal();
-  object.shape = Eigen::Vector3d(0.0, 50.0, 50.0);
+  object.P = P_diagonal.asDiagonal();
+  object.shape = shape;
   object.shape_cov = Eigen::Vector3d(0.5, 2500.0, 2500.0).asDiagonal();
   object.extent = mem_ekf_extent(object.shape);
   const Eigen::Matrix2d R = Eigen::Matrix2d::Identity() * 25.0;
-  std::mt19937_64 rng(5);
+  std::mt19937_64 rng(seed);
   for (int k = 0; k < scans; ++k) {
-    const std::vector<Eigen::Vector2d> plots =
-        object_plots(Eigen::Vector2d(150.0, 0.0), 100.0, 25.0, 8, rng);
+    const std::vector<Eigen::Vector2d> plots = object_plots(centre, 100.0, 25.0, n, rng);
     EXPECT_EQ(mem_ekf_update(spec, object, plots, R), UpdateStatus::kUpdated);
   }
-  return ellipse_axes(object.extent);
+  return object;
+}
+
+// A new track 150 m behind the object (the displacement of 15 m/s over a scan), its prior
+// extent a 50 m circle, updated with `scans` scans of 8 plots.
+EllipseAxes axes_after_offset_scans(double spread_bound_sigmas, int scans) {
+  return ellipse_axes(
+      updated_track(spread_bound_sigmas, KinVec(400.0, 100.0, 400.0, 100.0, 0.25, 0.25),
+                    Eigen::Vector3d(0.0, 50.0, 50.0), Eigen::Vector2d(150.0, 0.0), 8, scans, 5)
+          .extent);
 }
 
 TEST(MemEkfSpreadBound, CentreErrorIsNotReadAsExtent) {
@@ -62,21 +72,8 @@ TEST(MemEkfSpreadBound, CentreErrorIsNotReadAsExtent) {
 
 // A track on a static 100 m x 25 m object updated with `scans` scans of 20 plots.
 ExtendedObject track_on_object(double spread_bound_sigmas, int scans) {
-  MemEkfSpec spec;
-  spec.spread_bound_sigmas = spread_bound_sigmas;
-  ExtendedObject object;
-  object.x = KinVec::Zero();
-  object.P = KinVec(400.0, 1.0, 400.0, 1.0, 0.01, 0.01).asDiagonal();
-  object.shape = Eigen::Vector3d(0.1, 60.0, 40.0);
-  object.shape_cov = Eigen::Vector3d(0.5, 2500.0, 2500.0).asDiagonal();
-  const Eigen::Matrix2d R = Eigen::Matrix2d::Identity() * 25.0;
-  std::mt19937_64 rng(9);
-  for (int k = 0; k < scans; ++k) {
-    const std::vector<Eigen::Vector2d> plots =
-        object_plots(Eigen::Vector2d::Zero(), 100.0, 25.0, 20, rng);
-    EXPECT_EQ(mem_ekf_update(spec, object, plots, R), UpdateStatus::kUpdated);
-  }
-  return object;
+  return updated_track(spread_bound_sigmas, KinVec(400.0, 1.0, 400.0, 1.0, 0.01, 0.01),
+                       Eigen::Vector3d(0.1, 60.0, 40.0), Eigen::Vector2d::Zero(), 20, scans, 9);
 }
 
 TEST(MemEkfSpreadBound, ObjectSeenOnItsPredictionIsNotCapped) {

@@ -21,25 +21,8 @@ pids=()
 cleanup() { for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done; wait 2>/dev/null || true; }
 trap cleanup EXIT
 
-python3 - "$targets" "$clutter" "$seconds" >"$out/scenario.new.yaml" <<'PY'
-import math, random, sys
-targets, clutter, seconds = int(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3])
-rng = random.Random(7)
-print(f"""scenario: {{name: display_load, dimensions: 3, duration: {seconds}, seed: 1}}
-platform: {{position: [0, 0, 20]}}
-sensor:
-  scan_period: 1.0
-  detection_probability: 0.9
-  max_range: 150000
-  sigma: {{range: 30.0, azimuth: 0.002, elevation: 0.003}}
-clutter: {{mean: {clutter}, range: [5000, 150000], elevation: [0.0, 0.1]}}
-targets:""")
-for i in range(targets):
-    r, b = 20000 + 120000 * rng.random(), 2 * math.pi * rng.random()
-    h, v = 2 * math.pi * rng.random(), 150 + 150 * rng.random()
-    print(f"  - {{id: {i}, position: [{r*math.sin(b):.1f}, {r*math.cos(b):.1f}, "
-          f"{1000 + 9000*rng.random():.1f}], velocity: [{v*math.sin(h):.2f}, {v*math.cos(h):.2f}, 0]}}")
-PY
+python3 "$root/tools/experiments/load-scenario.py" display_load "$targets" "$clutter" "$seconds" 1.0 \
+  >"$out/scenario.new.yaml"
 # The same scenario as last time: its plots are reused.
 if ! cmp -s "$out/scenario.new.yaml" "$out/scenario.yaml" || [ ! -s "$out/load.plots.jsonl" ]; then
   mv "$out/scenario.new.yaml" "$out/scenario.yaml"

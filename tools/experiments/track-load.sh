@@ -12,25 +12,8 @@ profile=${3:-}
 out="$root/out/experiments/track-load"
 mkdir -p "$out"
 scenario="$out/load_${targets}_${clutter}.yaml"
-python3 - "$targets" "$clutter" > "$scenario" <<'PY'
-import math, random, sys
-targets, clutter = int(sys.argv[1]), int(sys.argv[2])
-rng = random.Random(7)
-print(f"""scenario: {{name: load_{targets}_{clutter}, dimensions: 3, duration: 116, seed: 1}}
-platform: {{position: [0, 0, 20]}}
-sensor:
-  scan_period: 4.0
-  detection_probability: 0.9
-  max_range: 150000
-  sigma: {{range: 30.0, azimuth: 0.002, elevation: 0.003}}
-clutter: {{mean: {clutter}, range: [5000, 150000], elevation: [0.0, 0.1]}}
-targets:""")
-for i in range(targets):
-    r, b = 20000 + 120000 * rng.random(), 2 * math.pi * rng.random()
-    h, v = 2 * math.pi * rng.random(), 150 + 150 * rng.random()
-    print(f"  - {{id: {i}, position: [{r*math.sin(b):.1f}, {r*math.cos(b):.1f}, "
-          f"{1000 + 9000*rng.random():.1f}], velocity: [{v*math.sin(h):.2f}, {v*math.cos(h):.2f}, 0]}}")
-PY
+python3 "$root/tools/experiments/load-scenario.py" "load_${targets}_${clutter}" "$targets" "$clutter" \
+  116 4.0 >"$scenario"
 "$skytrack" simulate --scenario "$scenario" --plots "$out/load.plots.jsonl" --truth "$out/load.truth.jsonl"
 args=(track --plots "$out/load.plots.jsonl" --out "$out/load.tracks.jsonl" --quiet)
 [ -n "$profile" ] && args+=(--profile "$profile")
