@@ -105,6 +105,9 @@ void raise_to_local_density(std::span<const PlotMeasurement> plots,
     }
     map[key(form, Grid(p, cells).cell_of(p))].add(p, +1);
   }
+  // The 3 x 3 block round each cell, summed once for all the plots in the cell.
+  std::unordered_map<std::uint64_t, Sums> blocks;
+  blocks.reserve(map.size());
   for (std::size_t j = 0; j < plots.size(); ++j) {
     const PlotMeasurement& p = plots[j];
     const int form = form_of(p);
@@ -112,13 +115,16 @@ void raise_to_local_density(std::span<const PlotMeasurement> plots,
     if (extent == extents.end()) continue;
     const Grid grid(p, cells);
     const Cell c = grid.cell_of(p);
-    Sums block;
-    for (std::int64_t da = -1; da <= 1; ++da) {
-      for (std::int64_t db = -1; db <= 1; ++db) {
-        const auto it = map.find(key(form, {c.a + da, grid.wrapped(c.b + db)}));
-        if (it != map.end()) block.add(it->second);
+    auto [cached, fresh] = blocks.try_emplace(key(form, c));
+    if (fresh) {
+      for (std::int64_t da = -1; da <= 1; ++da) {
+        for (std::int64_t db = -1; db <= 1; ++db) {
+          const auto it = map.find(key(form, {c.a + da, grid.wrapped(c.b + db)}));
+          if (it != map.end()) cached->second.add(it->second);
+        }
       }
     }
+    Sums block = cached->second;
     if (counted[j] != 0) block.add(p, -1);  // not itself
     if (block.count <= 0) continue;
     // The other components (elevation, range-rate, height) span what the block's plots span:

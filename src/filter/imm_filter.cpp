@@ -143,6 +143,16 @@ ImmEstimate ImmFilter::initial(const Gaussian& state, const Eigen::VectorXd& pro
 }
 
 ImmEstimate ImmFilter::predict(const ImmEstimate& posterior, double time) const noexcept {
+  return predict_modes(posterior, time, -1);
+}
+
+ImmEstimate ImmFilter::predict_certain(const ImmEstimate& posterior, int mode,
+                                       double time) const noexcept {
+  return predict_modes(posterior, time, mode);
+}
+
+ImmEstimate ImmFilter::predict_modes(const ImmEstimate& posterior, double time,
+                                     int certain) const noexcept {
   const int n = mode_count();
   assert(static_cast<int>(posterior.modes.size()) == n && posterior.probabilities.size() == n);
   ImmEstimate out;
@@ -161,17 +171,28 @@ ImmEstimate ImmFilter::predict(const ImmEstimate& posterior, double time) const 
   };
   Eigen::VectorXd& c = out.probabilities;
   c = Eigen::VectorXd::Zero(n);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) c[j] += transition(i, j) * posterior.probabilities[i];  // c_j
-  }
-  for (int j = 0; j < n; ++j) {
-    if (c[j] > 0.0) {  // eq. 1-2 with mu_i|j = p_ij mu_i / c_j
-      const Gaussian mixed = moment_match(posterior.modes, [&](std::size_t i) {
-        return transition(static_cast<Eigen::Index>(i), j) * posterior.probabilities[i] / c[j];
-      });
-      out.modes[j] = skytrack::predict(models_[j], layout_, mixed, dt);
-    } else {  // unreachable mode: nothing to mix, carry its own estimate
-      out.modes[j] = skytrack::predict(models_[j], layout_, posterior.modes[j], dt);
+  if (certain >= 0) {
+    // mu is 1 at `certain`: c_j = p_certain,j, and every mode's mixed estimate is the certain
+    // mode's own (its mixing weight is 1, the others' 0), so one prediction serves them all.
+    for (int j = 0; j < n; ++j) c[j] = transition(certain, j);
+    const auto k = static_cast<std::size_t>(certain);
+    out.modes[k] = skytrack::predict(models_[k], layout_, posterior.modes[k], dt);
+    for (std::size_t j = 0; j < out.modes.size(); ++j) {
+      if (j != k) out.modes[j] = out.modes[k];
+    }
+  } else {
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) c[j] += transition(i, j) * posterior.probabilities[i];  // c_j
+    }
+    for (int j = 0; j < n; ++j) {
+      if (c[j] > 0.0) {  // eq. 1-2 with mu_i|j = p_ij mu_i / c_j
+        const Gaussian mixed = moment_match(posterior.modes, [&](std::size_t i) {
+          return transition(static_cast<Eigen::Index>(i), j) * posterior.probabilities[i] / c[j];
+        });
+        out.modes[j] = skytrack::predict(models_[j], layout_, mixed, dt);
+      } else {  // unreachable mode: nothing to mix, carry its own estimate
+        out.modes[j] = skytrack::predict(models_[j], layout_, posterior.modes[j], dt);
+      }
     }
   }
   const double sum = c.sum();

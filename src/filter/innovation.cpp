@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 
 #include "innovation_detail.hpp"
 #include "skytrack/filter/fixed_size.hpp"
@@ -22,7 +23,8 @@ void fail_innovation(Innovation& out) noexcept {
 
 namespace {
 
-/// finish_innovation with S factorised at its compile-time size M.
+/// finish_innovation with S factorised at its compile-time size M, and the gain at N x M when
+/// the state size is a common one (a runtime-size solve costs several times more).
 template <int M>
 void finish_fixed(const GainMat& cross, Innovation& out) noexcept {
   const Eigen::LLT<Eigen::Matrix<double, M, M>> llt(out.S);
@@ -30,7 +32,16 @@ void finish_fixed(const GainMat& cross, Innovation& out) noexcept {
     fail_innovation(out);
     return;
   }
-  out.gain = llt.solve(cross.transpose()).transpose();  // K = cross S^-1, S symmetric
+  // K = cross S^-1; S^-1 in closed form at these sizes (S is positive definite here).
+  if (!with_fixed_state_size(static_cast<int>(cross.rows()), [&](auto n) {
+        constexpr int N = decltype(n)::value;
+        const Eigen::Matrix<double, M, M> s = out.S;
+        const Eigen::Matrix<double, N, M> c = cross;
+        const Eigen::Matrix<double, N, M> gain = c * s.inverse();
+        out.gain = gain;
+      })) {
+    out.gain = llt.solve(cross.transpose()).transpose();
+  }
   const Eigen::Matrix<double, M, 1> whitened = llt.matrixL().solve(out.residual);
   out.nis = whitened.squaredNorm();
   const double log_det = 2.0 * llt.matrixLLT().diagonal().array().log().sum();

@@ -48,15 +48,11 @@ std::optional<ImmEstimate> BranchLayer::last_motion(const PointTrack& track, dou
   }
   // The likeliest mode at the last detection, predicted alone: IMM mixing would blend in the
   // other modes' diverging predictions.
-  ImmEstimate one = *track.last_detected;
+  const ImmEstimate& last = *track.last_detected;
   Eigen::Index kept = 0;
-  one.probabilities.maxCoeff(&kept);
-  for (Gaussian& m : one.modes) m = one.modes[static_cast<std::size_t>(kept)];
-  one.probabilities.setZero();
-  one.probabilities[kept] = 1.0;
-  ImmEstimate predicted = (hold_ ? *hold_ : filter()).predict(one, std::max(time, one.time));
-  for (Gaussian& m : predicted.modes) m = predicted.modes[static_cast<std::size_t>(kept)];
-  return predicted;
+  last.probabilities.maxCoeff(&kept);
+  return (hold_ ? *hold_ : filter())
+      .predict_certain(last, static_cast<int>(kept), std::max(time, last.time));
 }
 
 }  // namespace skytrack

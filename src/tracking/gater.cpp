@@ -38,6 +38,8 @@ void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrac
   batch_mid_ = batch_mid;
   half_span_ = half_span;
   predicted_.resize(tracks.size());
+  coasted_.resize(tracks.size());
+  for (ImmEstimate& e : coasted_) e.modes.clear();
   covered_.assign(tracks.size(), 1);
   took_candidates_.assign(tracks.size(), 0);
   // Without branching.last_motion_false_plots every track counts as in a clutter area (its
@@ -59,8 +61,9 @@ void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrac
         continue;
       }
     }
-    const Gaussian mid =
-        filter.combine(filter.predict(estimate, std::max(batch_mid, estimate.time)));
+    const double mid_time = std::max(batch_mid, estimate.time);
+    ImmEstimate mid_estimate = filter.predict(estimate, mid_time);
+    const Gaussian mid = filter.combine(mid_estimate);
     const Eigen::Vector3d centre = position_of(mid.mean, dims_);
     // A sector batch looks at a track whose predicted position lies in the sector; one whose
     // search region only reaches into it may take a plot from it but is not aged by it.
@@ -79,11 +82,14 @@ void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrac
     pre.index().within(centre, radius, neighbours_);
     if (neighbours_.empty()) {
       predicted_[t] = estimate;
+      coasted_[t] = std::move(mid_estimate);
       continue;
     }
-    // The track is updated at the time of its nearest candidate plot.
+    // The track is updated at the time of its nearest candidate plot (a snapshot look's
+    // plots share the batch's time: its prediction to the middle is that one).
+    const double update_time = std::max(nearest_time(pre, neighbours_, centre), estimate.time);
     predicted_[t] =
-        filter.predict(estimate, std::max(nearest_time(pre, neighbours_, centre), estimate.time));
+        update_time == mid_time ? std::move(mid_estimate) : filter.predict(estimate, update_time);
     if (!non_manoeuvre) continue;
     hooks.narrow(static_cast<int>(t), predicted_[t], neighbours_, clutter_area_[t]);
     for (const int j : neighbours_) {
@@ -98,6 +104,18 @@ void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrac
       candidates_.push_back({static_cast<int>(t), j, std::move(hypothesis), likelihood});
     }
   }
+}
+
+ImmEstimate Gater::coast(const PointTrack& track, std::size_t t, const ImmFilter& filter,
+                         double time) {
+  ImmEstimate& coasted = coasted_[t];
+  if (!coasted.modes.empty() && coasted.time == std::max(time, track.estimate.time) &&
+      predicted_[t].time == track.estimate.time) {
+    ImmEstimate out = std::move(coasted);
+    coasted.modes.clear();
+    return out;
+  }
+  return filter.predict(track.estimate, std::max(time, track.estimate.time));
 }
 
 double Gater::search_radius(const Gaussian& g, const Eigen::Vector3d& centre, double threshold,

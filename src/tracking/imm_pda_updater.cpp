@@ -19,7 +19,7 @@ PlotRatios ImmPdaUpdater::update(PointLook& look, int t, std::vector<Candidate>&
   const double pd = look.profile.association.detection_probability;
   if (candidates.empty()) {
     track.estimate =
-        look.filter.predict(track.estimate, std::max(look.frame.time, track.estimate.time));
+        look.gater.coast(track, static_cast<std::size_t>(t), look.filter, look.frame.time);
     return {};
   }
   PlotRatios ratios;

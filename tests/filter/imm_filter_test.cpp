@@ -328,6 +328,35 @@ TEST(ImmFilter, TurnModeWinsInATurn) {
   EXPECT_GT(left_during, 0.75);
 }
 
+TEST(ImmFilter, PredictCertainEqualsTheFullPredictionOfAOneModePosterior) {
+  // GIVEN CV + a turn mode and a posterior that favours the turn, whose modes differ
+  Eigen::MatrixXd transition(2, 2);
+  transition << 0.9, 0.1, 0.3, 0.7;
+  auto filter = ImmFilter::create({ConstantVelocity{1.0, 1.0}, CoordinatedTurn{0.05, 3.0, 1.0}},
+                                  {"cv", "ct"}, transition, test::layout_2d(), {});
+  ASSERT_TRUE(filter);
+  ImmEstimate posterior = hand_posterior();
+  posterior.probabilities = Eigen::Vector2d(0.4, 0.6);
+  // WHEN it is predicted 4 s on as certain of the turn, and the same posterior made certain
+  // by hand (mu = (0, 1), every mode the turn's estimate) goes through the full IMM prediction
+  const ImmEstimate certain = filter->predict_certain(posterior, 1, 4.0);
+  ImmEstimate by_hand = posterior;
+  by_hand.modes = {posterior.modes[1], posterior.modes[1]};
+  by_hand.probabilities = Eigen::Vector2d(0.0, 1.0);
+  ImmEstimate full = filter->predict(by_hand, 4.0);
+  full.modes[0] = full.modes[1];
+  // THEN both give the same estimates and mode priors (the turn's row of the Markov matrix),
+  // to round-off
+  ASSERT_EQ(certain.modes.size(), 2U);
+  EXPECT_DOUBLE_EQ(certain.time, 4.0);
+  for (std::size_t j = 0; j < 2; ++j) {
+    EXPECT_LT((certain.modes[j].mean - full.modes[j].mean).norm(), 1e-9);
+    EXPECT_LT((certain.modes[j].covariance - full.modes[j].covariance).norm(), 1e-9);
+  }
+  EXPECT_NEAR(certain.probabilities[0], 0.3, 1e-12);
+  EXPECT_NEAR(certain.probabilities[1], 0.7, 1e-12);
+}
+
 TEST(ImmFilter, CreateRejectsInconsistentSetups) {
   Eigen::MatrixXd good(2, 2), bad(2, 2);
   good << 0.9, 0.1, 0.2, 0.8;

@@ -35,6 +35,11 @@ double peak_rss_mib() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
+double per_batch_ms(std::chrono::microseconds total, std::size_t batches) {
+  return batches == 0 ? 0.0
+                      : static_cast<double>(total.count()) / 1000.0 / static_cast<double>(batches);
+}
+
 double mean(const std::vector<double>& values) {
   double sum = 0.0;
   for (const double v : values) sum += v;
@@ -80,6 +85,7 @@ int run_track(const TrackOptions& options) {
   ProgressBar progress(!options.quiet);
   std::vector<double> latency_ms;
   std::size_t rejected_scans = 0, initiated = 0, refused = 0, max_tracks = 0;
+  std::chrono::microseconds predict{}, associate{}, manage{};
   const auto start = std::chrono::steady_clock::now();
   while (auto scan = reader->next()) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -103,6 +109,9 @@ int run_track(const TrackOptions& options) {
     }
     initiated += static_cast<std::size_t>(result.report.initiated);
     refused += static_cast<std::size_t>(result.report.initiations_refused);
+    predict += result.report.predict;
+    associate += result.report.associate;
+    manage += result.report.manage;
     max_tracks = std::max(max_tracks, result.frame.tracks.size());
     if (!writer->write(result.frame)) {
       fmt::print(stderr, "skytrack track: writing {} failed\n", options.out);
@@ -128,13 +137,15 @@ int run_track(const TrackOptions& options) {
       "rejected as clutter), {} lines rejected, {} numeric failures\n"
       "  tracks initiated {}, most at once {}; initiations refused (max_tentative) {}\n"
       "  per batch: mean {:.3f} ms, p50 {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms; wall {:.2f} s; "
-      "peak RSS {:.1f} MiB\n",
+      "peak RSS {:.1f} MiB\n"
+      "  stages, mean per batch: gating {:.3f} ms, association {:.3f} ms, management {:.3f} ms\n",
       profile.identity.name, c.scans_processed, c.scans_rejected, c.plots_processed,
       c.plots_invalid, c.plots_rejected_clutter, reader->counts().rejected_lines,
-      c.numeric_failures, initiated, max_tracks, refused, mean(latency_ms), percentile(latency_ms, 0.5),
-      percentile(latency_ms, 0.99),
+      c.numeric_failures, initiated, max_tracks, refused, mean(latency_ms),
+      percentile(latency_ms, 0.5), percentile(latency_ms, 0.99),
       latency_ms.empty() ? 0.0 : *std::max_element(latency_ms.begin(), latency_ms.end()), wall,
-      peak_rss_mib());
+      peak_rss_mib(), per_batch_ms(predict, latency_ms.size()),
+      per_batch_ms(associate, latency_ms.size()), per_batch_ms(manage, latency_ms.size()));
   return 0;
 }
 

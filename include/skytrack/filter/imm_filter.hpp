@@ -93,6 +93,11 @@ class ImmFilter {
   /// predicted c_j. The Markov matrix is the one for the interval (transition_over).
   ImmEstimate predict(const ImmEstimate& posterior, double time) const noexcept;
 
+  /// The prediction of `posterior` taken as certain of `mode` (mu one there, zero elsewhere):
+  /// that mode's estimate along its own model, set as every mode's estimate (one prediction,
+  /// not one per mode), with the mode priors such a certainty gives.
+  ImmEstimate predict_certain(const ImmEstimate& posterior, int mode, double time) const noexcept;
+
   /// Innovations of one plot against every mode of a prediction.
   PlotHypothesis hypothesise(const ImmEstimate& predicted,
                              const PlotMeasurement& measurement) const noexcept;
@@ -122,6 +127,7 @@ class ImmFilter {
   int mode_count() const { return static_cast<int>(models_.size()); }
 
  private:
+  ImmEstimate predict_modes(const ImmEstimate& posterior, double time, int certain) const noexcept;
   std::vector<AnyMotionModel> models_;
   std::vector<std::string> names_;
   Eigen::MatrixXd transition_;

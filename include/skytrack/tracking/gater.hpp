@@ -44,6 +44,10 @@ class Gater {
   const std::vector<Candidate>& candidates() const { return candidates_; }
   /// Per track, its IMM prediction at its update time (its estimate if it gated nothing).
   std::vector<ImmEstimate>& predicted() { return predicted_; }
+  /// Track t (slot) predicted to `time` without a plot: the gater's own prediction when it
+  /// made that one from the same estimate (a track with no plot round it; handed over once),
+  /// else a new one.
+  ImmEstimate coast(const PointTrack& track, std::size_t t, const ImmFilter& filter, double time);
   /// Per track: inside this look's coverage (the look ages it).
   bool covered(std::size_t t) const { return t >= covered_.size() || covered_[t] != 0; }
   /// Per track: a plot of this look in its gate.
@@ -108,6 +112,7 @@ class Gater {
 
   std::vector<Candidate> candidates_;
   std::vector<ImmEstimate> predicted_;
+  std::vector<ImmEstimate> coasted_;  // per track: its prediction to the middle, if no plot
   std::vector<std::uint8_t> covered_, took_candidates_, clutter_area_;  // per track
   std::vector<std::uint8_t> gated_;                                     // per plot
   std::vector<int> neighbours_;
