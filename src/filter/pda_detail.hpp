@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "skytrack/filter/fixed_size.hpp"
 #include "skytrack/filter/innovation.hpp"
 
 namespace skytrack::filter_detail {
@@ -27,6 +28,31 @@ inline PdaScale pda_scale(double sum_likelihood, double detection_probability,
   return {miss / total, scale / total};
 }
 
+/// pda_mixture's sums at a compile-time state size N (Vec, Mat) or at runtime sizes (StateVec,
+/// StateMat): Eigen's loops over runtime sizes cost several times more.
+template <class Vec, class Mat, class InnovationAt, class WeightAt>
+Gaussian pda_mixture_sum(const Gaussian& predicted, std::size_t count,
+                         const InnovationAt& innovation, const WeightAt& weight, double miss,
+                         double total) noexcept {
+  Vec mean = predicted.mean;  // x_pred + sum_i beta_i K_i nu_i
+  for (std::size_t i = 0; i < count; ++i) {
+    const double b = weight(i) / total;
+    if (b > 0.0) mean += Vec(b * (innovation(i).gain * innovation(i).residual));
+  }
+  Vec dx = Vec(predicted.mean) - mean;
+  Mat covariance = (miss / total) * Mat(predicted.covariance);
+  covariance.noalias() += (miss / total) * (dx * dx.transpose());
+  for (std::size_t i = 0; i < count; ++i) {
+    const double b = weight(i) / total;
+    if (b <= 0.0) continue;
+    const Gaussian updated = kalman_update(predicted, innovation(i));
+    dx = Vec(updated.mean) - mean;
+    covariance += b * Mat(updated.covariance);
+    covariance.noalias() += b * (dx * dx.transpose());
+  }
+  return Gaussian{mean, covariance};
+}
+
 /// innovation(i) -> const Innovation&, beta(i) -> double, for i < count.
 template <class InnovationAt, class BetaAt>
 Gaussian pda_mixture(const Gaussian& predicted, std::size_t count, const InnovationAt& innovation,
@@ -39,25 +65,15 @@ Gaussian pda_mixture(const Gaussian& predicted, std::size_t count, const Innovat
   double total = miss;
   for (std::size_t i = 0; i < count; ++i) total += weight(i);
   if (!(total > 0.0) || !std::isfinite(total)) return predicted;
-
-  Gaussian out;  // mean: x_pred + sum_i beta_i K_i nu_i
-  out.mean = predicted.mean;
-  for (std::size_t i = 0; i < count; ++i) {
-    const double b = weight(i) / total;
-    if (b > 0.0) out.mean.noalias() += b * (innovation(i).gain * innovation(i).residual);
+  Gaussian out;
+  if (with_fixed_state_size(static_cast<int>(predicted.mean.size()), [&](auto n) {
+        constexpr int N = decltype(n)::value;
+        out = pda_mixture_sum<Eigen::Matrix<double, N, 1>, Eigen::Matrix<double, N, N>>(
+            predicted, count, innovation, weight, miss, total);
+      })) {
+    return out;
   }
-  StateVec dx = predicted.mean - out.mean;
-  out.covariance = (miss / total) * predicted.covariance;
-  out.covariance.noalias() += (miss / total) * (dx * dx.transpose());
-  for (std::size_t i = 0; i < count; ++i) {
-    const double b = weight(i) / total;
-    if (b <= 0.0) continue;
-    const Gaussian updated = kalman_update(predicted, innovation(i));
-    dx = updated.mean - out.mean;
-    out.covariance += b * updated.covariance;
-    out.covariance.noalias() += b * (dx * dx.transpose());
-  }
-  return out;
+  return pda_mixture_sum<StateVec, StateMat>(predicted, count, innovation, weight, miss, total);
 }
 
 }  // namespace skytrack::filter_detail

@@ -182,15 +182,19 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
   }
   for (std::size_t i = 0; i < plots.size(); ++i) {
     if (used_[i]) continue;
-    // The seed whose implied speed is plausible and whose distance is smallest.
+    // The seed whose implied speed is plausible and whose distance is smallest (the first in
+    // seed order among equals). The youngest batch's seeds are searched first: the nearest
+    // found bounds the search among the older ones, whose speed discs are wider.
     int best = -1;
     double best_distance = std::numeric_limits<double>::infinity();
-    for (std::size_t g = 0; g < seed_groups_.size(); ++g) {
+    for (std::size_t g = seed_groups_.size(); g-- > 0;) {
       const SeedGroup& group = seed_groups_[g];
       // Every seed the speed test below can accept: distance - slack <= max_speed dt.
       const double reach = spec_.max_speed * (plots[i].time - group.oldest) +
                            3.0 * (position_sigma(plots[i]) + group.max_sigma) + 1.0;
-      seed_indices_[g].within(positions_[i], reach, neighbours_);
+      // (A margin over the nearest so far: the tree's round-off is not the norm's.)
+      seed_indices_[g].within(positions_[i], std::min(reach, best_distance * (1.0 + 1e-9) + 1e-6),
+                              neighbours_);
       for (const int member : neighbours_) {
         const int s = static_cast<int>(group.begin) + member;
         const Seed& seed = seeds_[s];
@@ -202,7 +206,7 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
         const double slack = 3.0 * (position_sigma(plots[i]) + position_sigma(seed.plot));
         const double speed_low = (distance - slack) / dt, speed_high = (distance + slack) / dt;
         if (speed_high < spec_.min_speed || speed_low > spec_.max_speed) continue;
-        if (distance < best_distance) {
+        if (distance < best_distance || (distance == best_distance && s < best)) {
           best_distance = distance;
           best = s;
         }
