@@ -1,11 +1,11 @@
 #pragma once
 // Existence probability of an extended track (a Bernoulli track's r, as in IPDA: Musicki,
-// Evans & Stankovic 1994, eq. 17-19, with a partition of plots in place of one plot), kept
-// as log-odds. It replaces the bare miss count for deleting confirmed tracks: a scan with
-// plots raises it by the likelihood ratio of their count (an object's Poisson(gamma) plots
-// against the clutter expected in the track's gate), a scan without lowers it by
-// 1 - P_D', so a track that has shown its object many plots a scan survives a fade that
-// deletes a track formed from a few clutter plots.
+// Evans & Stankovic 1994, IEEE Trans. AC 39(6), with a scan's partition of plots in place of
+// one plot), kept as log-odds. It replaces the bare miss count for deleting confirmed tracks: a
+// scan with plots raises it by the likelihood ratio of their count (an object's Poisson(gamma)
+// plots against the clutter expected in the track's gate), a scan without lowers it by 1 - P_D', so
+// a track that has shown its object many plots a scan survives a fade that deletes a track formed
+// from a few clutter plots.
 #include "skytrack/extended/extended_spec.hpp"
 
 namespace skytrack::extended {
