@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "skytrack/extended/extended_estimator_mode.hpp"
 #include "skytrack/extended/extended_existence.hpp"
 
 namespace skytrack::extended {
@@ -60,6 +61,21 @@ TEST(ExtendedExistence, WellSeenTrackOutlivesThreeMissesAndAPairTrackDoesNot) {
   double pair = existence_birth(spec);
   for (int k = 0; k < 2; ++k) pair = existence_hit(existence_predict(pair, spec), 2, 4e4, spec);
   EXPECT_LE(misses_survived(pair), 1);
+}
+
+TEST(ExtendedExistence, ModeRefusesParametersOutOfRange) {
+  // GIVEN an extended profile WHEN P_D is 0 or the deletion threshold 1 THEN no mode
+  config::TrackingProfile profile;
+  profile.mode = config::TrackingMode::kExtended;
+  EXPECT_TRUE(ExtendedMode::create(profile));
+  profile.extended.existence.detection_probability = 0.0;
+  EXPECT_FALSE(ExtendedMode::create(profile));
+  profile.extended.existence.detection_probability = 0.95;
+  profile.extended.existence.delete_below = 1.0;
+  EXPECT_FALSE(ExtendedMode::create(profile));
+  // AND with existence off its parameters are not used
+  profile.extended.existence.enabled = false;
+  EXPECT_TRUE(ExtendedMode::create(profile));
 }
 
 }  // namespace
