@@ -191,8 +191,16 @@ void read_extended(YamlSection s, TrackingProfile& p) {
   s.integer("confirm_hits", e.confirm_hits, Range{1.0, 1000.0});
   s.integer("tentative_max_misses", e.tentative_max_misses, Range{1.0, 1000.0});
   s.integer("delete_misses", e.delete_misses, Range{1.0, 1000.0});
-  s.integer("established_hits", e.established_hits, Range{1.0, 1e6});
-  s.integer("established_delete_misses", e.established_delete_misses, Range{1.0, 1000.0});
+  YamlSection existence = s.section("existence");
+  extended::ExistenceSpec& x = e.existence;
+  existence.boolean("enabled", x.enabled);
+  existence.number("detection_probability", x.detection_probability, Range::open_probability());
+  existence.number("expected_plots", x.expected_plots, Range{1e-3, 1e6});
+  existence.number("clutter_density", x.clutter_density, Range{1e-15, 1.0});
+  existence.number("survival", x.survival, Range::open_probability());
+  existence.number("birth", x.birth, Range{0.0, 1.0, true, true});
+  existence.number("delete_below", x.delete_below, Range{0.0, 1.0, true, true});
+  existence.finish();
   s.number("initial_speed_sigma", e.initial_speed_sigma, Range{1e-3, kMaxSpeed});
   s.number("initial_accel_sigma", e.initial_accel_sigma, Range{1e-3, kMaxAccel});
   s.number("initial_extent_axis", e.initial_extent_axis, Range{1e-3, 1e5});

@@ -12,6 +12,17 @@ Expected<ExtendedMode> ExtendedMode::create(const config::TrackingProfile& profi
                       "', mode extended: confirm_hits, delete_misses, tentative_max_misses and "
                       "min_partition_plots must be at least 1");
   }
+  const ExistenceSpec& e = spec.existence;
+  auto open_unit = [](double p) { return p > 0.0 && p < 1.0; };
+  if (e.enabled &&
+      (!(e.detection_probability > 0.0 && e.detection_probability <= 1.0) ||
+       !(e.survival > 0.0 && e.survival <= 1.0) || !open_unit(e.birth) ||
+       !open_unit(e.delete_below) || !(e.expected_plots > 0.0) || !(e.clutter_density > 0.0))) {
+    return make_error("profile '" + profile.identity.name +
+                      "', mode extended: existence needs detection_probability and survival in "
+                      "(0, 1], birth and delete_below in (0, 1), expected_plots and "
+                      "clutter_density above 0");
+  }
   return ExtendedMode(spec);
 }
 

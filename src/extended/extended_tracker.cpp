@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include <Eigen/Cholesky>
 
 #include "skytrack/extended/ellipse_geometry.hpp"
+#include "skytrack/extended/extended_existence.hpp"
 
 namespace skytrack::extended {
 namespace {
@@ -39,6 +41,10 @@ bool cartesian_plot(const PlotMeasurement& m, Eigen::Vector2d& position, Eigen::
 }
 
 }  // namespace
+
+double ExtendedTrack::existence() const {
+  return existence_probability(existence_log_odds);
+}
 
 ExtendedTracker::ExtendedTracker(const ExtendedSpec& spec) : spec_(spec), estimator_(spec) {}
 
@@ -125,7 +131,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
                                 ExtendedScanReport& report) {
   const int track_count = static_cast<int>(tracks_.size());
   track_plots_.resize(track_count);
-  shared_.assign(track_count, 0);
+  gate_areas_.assign(track_count, 0.0);
   for (std::vector<int>& plots : track_plots_) plots.clear();
   std::vector<const std::vector<int>*>& unassigned = unassigned_;
   unassigned.clear();
@@ -163,7 +169,6 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
       }
       continue;
     }
-    for (const Gated& g : gated_) shared_[g.track] = 1;
     if (crossing_unresolved()) {
       for (const Gated& g : gated_) tracks_[g.track].unresolved = true;
       continue;
@@ -186,6 +191,14 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
     for (int i : plots) plot_buffer_.push_back(positions_[i]), noise += noises_[i];
     noise /= static_cast<double>(plots.size());
+    // The plot gate's area before the update, where clutter could have come from.
+    const PosMat H = position_matrix();
+    const Eigen::Matrix2d G =
+        H * track.object.P * H.transpose() + kScatter * association_extents_[t] + noise;
+    const Eigen::LLT<Eigen::Matrix2d> llt(G);  // sqrt(det G) = L00 L11
+    gate_areas_[t] = llt.info() == Eigen::Success ? std::numbers::pi * spec_.plot_gate *
+                                                        llt.matrixL()(0, 0) * llt.matrixL()(1, 1)
+                                                  : 0.0;
     if (track.hits == 1 && scan_dt_ > 0.0) two_point_velocity(track);
     const UpdateStatus status = estimator_.update(track.object, plot_buffer_, noise);
     if (status == UpdateStatus::kNumericFailure) ++report.numeric_failures;
@@ -250,6 +263,7 @@ void ExtendedTracker::initiate(const std::vector<int>& group, ExtendedScanReport
   track.object = estimator_.initiate(x, P, extent);
   track.hits = 1;
   track.birth_variance = pos_var;
+  track.existence_log_odds = existence_birth(spec_.existence);
   track.plots = static_cast<int>(group.size());
   tracks_.push_back(track);
   ++report.initiated;
@@ -260,31 +274,41 @@ void ExtendedTracker::manage(ExtendedScanReport& report) {
   for (int t = 0; t < static_cast<int>(tracks_.size()); ++t) {
     ExtendedTrack& track = tracks_[t];
     if (track.id >= first_new) continue;  // born this scan
+    // Existence: a coast through a crossing (unresolved) is neither a hit nor a miss.
+    const ExistenceSpec& e = spec_.existence;
+    double& log_odds = track.existence_log_odds;
+    log_odds = existence_predict(log_odds, e);
+    if (track.plots > 0) {
+      log_odds = existence_hit(log_odds, track.plots, gate_areas_[t], e);
+    } else if (!track.unresolved) {
+      log_odds = existence_miss(log_odds, std::max(1, spec_.min_partition_plots), e);
+    }
     if (track.plots > 0) {
       ++track.hits;
       track.misses = 0;
-      track.unseen_misses = 0;
-      if (track.status == ExtendedTrackStatus::kTentative && track.hits >= spec_.confirm_hits) {
+      // With existence, not while it is below the deletion threshold: plot pairs a large
+      // young gate would hold as clutter do not confirm a track only to delete it.
+      const bool likely = !e.enabled || track.existence() >= e.delete_below;
+      if (track.status == ExtendedTrackStatus::kTentative && track.hits >= spec_.confirm_hits &&
+          likely) {
         track.status = ExtendedTrackStatus::kConfirmed;
         ++report.confirmed;
       }
     } else if (!track.unresolved) {
       ++track.misses;
-      track.unseen_misses += !shared_[t];
     }
   }
   // A tentative track whose centre lies inside an older track's ellipse duplicates it.
   auto lost = [this](const ExtendedTrack& track) {
     if (!track.object.x.allFinite() || !track.object.extent.allFinite()) return true;
-    // An established track that missed only scans in which it shared no partition lost sight
-    // of its object (a run of non-detections, (1 - P_D)^m): it coasts longer. One that missed
-    // while sharing a partition may have lost its object to a neighbour: the usual count.
-    const bool unseen = track.hits >= spec_.established_hits && track.unseen_misses == track.misses;
-    const int limit = track.status != ExtendedTrackStatus::kConfirmed ? spec_.tentative_max_misses
-                      : unseen ? spec_.established_delete_misses
-                               : spec_.delete_misses;
-    if (track.misses >= limit) return true;
-    if (track.status != ExtendedTrackStatus::kTentative) return false;
+    // A confirmed track goes when its object's existence is no longer likely (one that showed
+    // many plots a scan starts its coast higher than one of plot pairs, so lasts longer);
+    // without existence, after delete_misses.
+    if (track.status == ExtendedTrackStatus::kConfirmed) {
+      return spec_.existence.enabled ? track.existence() < spec_.existence.delete_below
+                                     : track.misses >= spec_.delete_misses;
+    }
+    if (track.misses >= spec_.tentative_max_misses) return true;
     for (const ExtendedTrack& other : tracks_) {
       if (other.id >= track.id) break;  // ordered by number: only older ones
       const Eigen::Vector2d d = track.position() - other.position();

@@ -1,5 +1,6 @@
-// ExtendedTracker's deletion of a confirmed track whose object goes unseen for a while
-// (ExtendedSpec::established_hits, established_delete_misses).
+// ExtendedTracker's deletion of a confirmed track by its existence probability
+// (ExtendedSpec::existence): a well-seen object coasts through a fade, a track of plot pairs
+// (clutter) goes sooner.
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -46,38 +47,54 @@ std::vector<std::uint64_t> run_unseen(const ExtendedSpec& spec, int scans, int u
   return numbers;
 }
 
-TEST(ExtendedTrackLife, EstablishedTrackCoastsThroughItsObjectUnseen) {
-  // GIVEN a track established over 12 scans, its object then unseen for 4 scans
-  ExtendedSpec spec;
-  spec.established_hits = 10;
-  spec.established_delete_misses = 5;
-  // WHEN the object is seen again on its path
-  const std::vector<std::uint64_t> numbers = run_unseen(spec, 20, 12, 16);
-  // THEN one track, one number, before and after
-  ASSERT_EQ(numbers.size(), 9u + 4u);
+TEST(ExtendedTrackLife, WellSeenTrackCoastsThroughThreeScansUnseen) {
+  // GIVEN the default existence and an object seen 12 scans, 8 plots each
+  const ExtendedSpec spec;
+  // WHEN it is unseen for 3 scans, then seen again on its path
+  const std::vector<std::uint64_t> numbers = run_unseen(spec, 20, 12, 15);
+  // THEN one track within 100 m of it, one number, before and after
+  ASSERT_EQ(numbers.size(), 9u + 5u);
   for (std::uint64_t id : numbers) EXPECT_EQ(id, numbers.front());
 }
 
-TEST(ExtendedTrackLife, DefaultDeletesAfterThreeMissesAndRenumbers) {
-  // GIVEN the default (no exception: established_delete_misses = delete_misses = 3)
-  const ExtendedSpec spec;
-  // WHEN the same object is unseen for 4 scans
-  const std::vector<std::uint64_t> numbers = run_unseen(spec, 20, 12, 16);
-  // THEN the track is deleted; the object is confirmed again under a new number after
-  // confirm_hits scans
+TEST(ExtendedTrackLife, ObjectUnseenFourScansIsRenumbered) {
+  // GIVEN the same object WHEN it is unseen for 4 scans THEN its track is deleted and the
+  // object is confirmed again under a new number
+  const std::vector<std::uint64_t> numbers = run_unseen(ExtendedSpec{}, 20, 12, 16);
   ASSERT_FALSE(numbers.empty());
   EXPECT_NE(numbers.front(), numbers.back());
 }
 
-TEST(ExtendedTrackLife, YoungTrackIsDeletedOnTheUsualCount) {
-  // GIVEN a track confirmed 5 scans (fewer than established_hits) WHEN its object is unseen
-  // for 4 scans THEN it is deleted after 3 and the object comes back under a new number
+TEST(ExtendedTrackLife, WithoutExistenceDeletesAfterDeleteMisses) {
+  // GIVEN existence off (delete_misses 3) WHEN the object is unseen for 3 scans THEN the
+  // track is deleted and the object renumbered
   ExtendedSpec spec;
-  spec.established_hits = 10;
-  spec.established_delete_misses = 5;
-  const std::vector<std::uint64_t> numbers = run_unseen(spec, 14, 5, 9);
+  spec.existence.enabled = false;
+  const std::vector<std::uint64_t> numbers = run_unseen(spec, 20, 12, 15);
   ASSERT_FALSE(numbers.empty());
   EXPECT_NE(numbers.front(), numbers.back());
+}
+
+TEST(ExtendedTrackLife, PlotPairsAreNotConfirmedAsAnObject) {
+  // GIVEN a pair of plots 20 m apart at the same place in six scans (clutter), in a young
+  // track's gate of some 10^6 m^2 where clutter of 1e-6 / m^2 gives about as many
+  auto confirmed_after = [](const ExtendedSpec& spec) {
+    ExtendedTracker tracker(spec);
+    const std::vector<Eigen::Vector2d> pair = {{0.0, 0.0}, {20.0, 0.0}};
+    const std::vector<Eigen::Matrix2d> noises(2, Eigen::Matrix2d::Identity() * 25.0);
+    for (int k = 0; k < 6; ++k) {
+      tracker.process(10.0 * k, pair, noises);
+      for (const ExtendedTrack& track : tracker.tracks()) {
+        if (track.status == ExtendedTrackStatus::kConfirmed) return k + 1;
+      }
+    }
+    return 0;
+  };
+  // WHEN tracked with existence THEN never confirmed; without it, at the third scan
+  EXPECT_EQ(confirmed_after(ExtendedSpec{}), 0);
+  ExtendedSpec counts;
+  counts.existence.enabled = false;
+  EXPECT_EQ(confirmed_after(counts), 3);
 }
 
 }  // namespace

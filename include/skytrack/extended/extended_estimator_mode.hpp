@@ -4,7 +4,8 @@
 // MEM-EKF*), one per sensor, 2-D. Its tracks are `kind: extended` with the centre's position
 // and velocity and the extent (the 2x2 shape matrix of the object's ellipse). A tentative
 // track carries a provisional number; a track is numbered when it is confirmed, so clutter
-// that never confirms takes no number; coasting while it misses; deleted after its misses.
+// that never confirms takes no number; coasting while it misses; deleted when its existence
+// probability falls below the profile's threshold (after its misses with existence off).
 #include <cstdint>
 #include <map>
 #include <vector>

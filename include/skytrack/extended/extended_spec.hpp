@@ -81,6 +81,23 @@ struct MemEkfSpec {
   bool operator==(const MemEkfSpec&) const = default;
 };
 
+/// Existence probability of a track (extended_existence.hpp). When enabled it decides when a
+/// confirmed track is deleted, in place of delete_misses: one that has shown its object many
+/// plots a scan coasts through three scans without plots, one built of a few plots a scan
+/// (clutter) is dropped after one or two (docs/extended.md, table C).
+struct ExistenceSpec {
+  bool enabled = true;
+  double detection_probability = 0.95;  // P_D: an object gives plots in a scan
+  double expected_plots = 8.0;          // gamma: an object's mean plots per scan when seen
+  double clutter_density = 1e-6;        // [1/m^2] lambda, clutter plots per unit area
+  /// p_s: the object is still there a scan later. It caps r at p_s, so it sets how many
+  /// scans without plots the best-seen track survives: 0.99999 and P_D 0.95, three.
+  double survival = 0.99999;
+  double birth = 0.1;         // r of a new track: its first partition is no evidence yet
+  double delete_below = 0.5;  // a confirmed track with r below this is deleted
+  bool operator==(const ExistenceSpec&) const = default;
+};
+
 /// The whole of extended mode's profile section.
 struct ExtendedSpec {
   EstimatorKind kind = EstimatorKind::kSmf;
@@ -88,6 +105,7 @@ struct ExtendedSpec {
   SmfSpec smf;
   RandomMatrixSpec random_matrix;
   MemEkfSpec mem_ekf;
+  ExistenceSpec existence;
 
   // Multi-object tracker (ExtendedTracker).
   double partition_distance = 100.0;  // [m] plots closer than this share a partition
@@ -102,19 +120,12 @@ struct ExtendedSpec {
   int min_partition_plots = 2;        // fewer plots start no track and update no track
   int confirm_hits = 3;               // a tentative track is confirmed after this many updates...
   int tentative_max_misses = 1;       // ...and deleted after this many consecutive misses
-  int delete_misses = 3;              // a confirmed track is deleted after this many misses
+  int delete_misses = 3;              // ...a confirmed one after this many (existence off)
   double initial_speed_sigma = 20.0;  // [m/s] a new track's velocity prior (starts at 0)
   double initial_accel_sigma = 0.5;   // [m/s^2] the process noise: more is fitted to noise
   /// [m] floor of a new track's semi-axes, and of the semi-axes association uses (gate,
   /// split of a shared partition), so a collapsed estimate does not shrink the gate.
   double initial_extent_axis = 50.0;
-  /// An established confirmed track (plots in at least `established_hits` scans) that shared
-  /// no partition with another track in any of its misses is deleted after
-  /// `established_delete_misses` instead of `delete_misses`: its object unseen a while, not
-  /// lost to a neighbour. The default, equal to delete_misses, makes no exception
-  /// (docs/extended.md: 10 / 5 measured, fewer number changes, more false tracks).
-  int established_hits = 10;
-  int established_delete_misses = 3;
   bool operator==(const ExtendedSpec&) const = default;
 };
 

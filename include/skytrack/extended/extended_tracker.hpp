@@ -36,11 +36,11 @@ struct ExtendedTrack {
   /// In the last scan it shared a partition with a crossing neighbour it could not be told
   /// from, and coasted on its prediction: not a miss.
   bool unresolved = false;
-  /// Of its misses, scans in which it shared no partition with another track: its object
-  /// unseen, not its plots gone to a neighbour (ExtendedSpec::established_delete_misses).
-  int unseen_misses = 0;
   double birth_variance = 0.0;  // [m^2] its first centre's variance per axis
+  /// ln(r / (1 - r)), r the probability its object exists (extended_existence.hpp).
+  double existence_log_odds = 0.0;
 
+  double existence() const;                                        // r
   Eigen::Vector2d position() const { return object.position(); }   // [m] centre
   Eigen::Vector2d velocity() const { return object.velocity(); }   // [m/s]
   const Eigen::Matrix2d& extent() const { return object.extent; }  // [m^2] shape matrix
@@ -119,8 +119,7 @@ class ExtendedTracker {
   std::vector<const std::vector<int>*> unassigned_;
   std::vector<Eigen::Vector2d> plane_positions_;  // PlotMeasurements in the tracking plane
   std::vector<Eigen::Matrix2d> plane_noises_;
-  /// Per track, it gated a partition with another track this scan.
-  std::vector<char> shared_;
+  std::vector<double> gate_areas_;  // [m^2] per track, its plot gate's area this scan
 };
 
 }  // namespace skytrack::extended
