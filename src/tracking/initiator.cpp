@@ -23,6 +23,25 @@ bool same_revolution(const PlotMeasurement& a, const PlotMeasurement& b) {
   return a.sensor == b.sensor && b.sweep - a.sweep <= kHalfTurn;
 }
 
+/// Range sigma of a polar plot; position_sigma for a Cartesian one.
+double range_sigma(const PlotMeasurement& plot) {
+  return is_polar(plot.model.kind) ? plot.model.sigma[0] : position_sigma(plot);
+}
+
+/// |offset . line of sight| of `position - expected` at a polar plot (the line from its
+/// sensor to `position`), or -1 for a Cartesian plot.
+double line_of_sight_offset(const PlotMeasurement& plot, const Eigen::Vector3d& position,
+                            const Eigen::Vector3d& expected, int dims) {
+  if (!is_polar(plot.model.kind)) return -1.0;
+  Eigen::Vector3d sight = position - plot.model.platform.position;
+  if (dims == 2) sight.z() = 0.0;
+  const double length = sight.norm();
+  if (!(length > 0.0)) return -1.0;
+  Eigen::Vector3d offset = position - expected;
+  if (dims == 2) offset.z() = 0.0;
+  return std::abs(offset.dot(sight)) / length;
+}
+
 }  // namespace
 
 double position_sigma(const PlotMeasurement& plot) noexcept {
@@ -132,10 +151,20 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
       const double dt = plots[j].time - chain.time;
       if (dt <= 0.0 || same_revolution(chain.plots.back(), plots[j])) continue;
       const Eigen::Vector3d expected = chain.position + chain.velocity * dt;
-      const double gate =
-          4.0 * (sigma_last + position_sigma(plots[j])) + 0.5 * kMaxAcceleration * dt * dt;
+      const double manoeuvre = 0.5 * kMaxAcceleration * dt * dt;
+      const double gate = 4.0 * (sigma_last + position_sigma(plots[j])) + manoeuvre;
       const double d = (positions_[j] - expected).head(dims_).norm();
-      if (d < gate) extensions_.push_back({d, static_cast<int>(c), j});
+      if (d >= gate) continue;
+      // A radar measures range far better than angle: along the line of sight the gate is
+      // the ranges' own four sigma (plus the manoeuvre), not the cross-range one.
+      if (const double along = line_of_sight_offset(plots[j], positions_[j], expected, dims_);
+          along >= 0.0) {
+        const double gate_along =
+            4.0 * (range_sigma(chain.plots.back()) + range_sigma(plots[j])) + manoeuvre;
+        const double across2 = std::max(0.0, d * d - along * along);
+        if (along * along / (gate_along * gate_along) + across2 / (gate * gate) >= 1.0) continue;
+      }
+      extensions_.push_back({d, static_cast<int>(c), j});
     }
   }
   // Nearest pairs first over all chains: in chain order a clutter chain whose 6 g gate
