@@ -2,6 +2,7 @@
 // chain's wide gate reaches it too, and a chain of M plots within N looks starts a track.
 #include "skytrack/tracking/initiator.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -16,6 +17,20 @@ PlotMeasurement plot(std::int64_t id, double time, double x, double y) {
   p.model = MeasurementModel::cartesian(2, 2, sigma);
   p.z = MeasVec::Zero(2);
   p.z << x, y;
+  p.time = time;
+  p.plot_id = id;
+  return p;
+}
+
+/// A 2-D radar plot (range sigma 30 m, azimuth 2 mrad) of a target at (x, y), the radar at
+/// the origin; azimuth clockwise from north.
+PlotMeasurement polar_plot(std::int64_t id, double time, double x, double y) {
+  PlotMeasurement p;
+  MeasVec sigma = MeasVec::Zero(2);
+  sigma << 30.0, 0.002;
+  p.model = MeasurementModel::polar(PlatformState{}, false, false, 2, sigma);
+  p.z = MeasVec::Zero(2);
+  p.z << std::hypot(x, y), std::atan2(x, y);
   p.time = time;
   p.plot_id = id;
   return p;
@@ -59,6 +74,24 @@ TEST(Initiator, ChainWithoutItsThirdPlotWithinNLooksIsDropped) {
   EXPECT_TRUE(initiator.step(3, 30.0, {}, kEverywhere).empty());
   EXPECT_EQ(initiator.candidates(), 0u);
   EXPECT_TRUE(initiator.step(4, 40.0, {plot(4, 40.0, 7500, 0)}, kEverywhere).empty());
+}
+
+TEST(Initiator, ThirdPlotIsGatedAlongTheLineOfSightByTheRangeSigma) {
+  // A target 100 km north flying east at 200 m/s, seen every 4 s: 200 m cross-range sigma,
+  // 30 m in range. The third plot's gate: four sigma plus a 6 g manoeuvre (480 m), 2080 m
+  // across the line of sight and 720 m along it.
+  const auto third = [](double x, double y) {
+    Initiator initiator(config::InitiationSpec{}, 2);
+    initiator.step(1, 4.0, {polar_plot(1, 4.0, 0, 100000)}, kEverywhere);
+    initiator.step(2, 8.0, {polar_plot(2, 8.0, 800, 100000)}, kEverywhere);
+    return initiator.step(3, 12.0, {polar_plot(3, 12.0, x, y)}, kEverywhere).size();
+  };
+  // The prediction is (1600, 100000). 1200 m across the line of sight: a track.
+  EXPECT_EQ(third(2800, 100000), 1u);
+  // 1200 m along it (a range error of 40 sigma, inside the cross-range circle): none.
+  EXPECT_EQ(third(1600, 101200), 0u);
+  // 600 m along it (a manoeuvre): a track.
+  EXPECT_EQ(third(1600, 100600), 1u);
 }
 
 }  // namespace
