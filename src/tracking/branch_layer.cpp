@@ -3,6 +3,7 @@
 #include "skytrack/tracking/branch_layer.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -16,6 +17,15 @@ namespace skytrack {
 namespace {
 
 using namespace tracking_detail;
+
+/// Two plots' models give one innovation covariance against one prediction: the same form,
+/// sensor geometry and noise.
+bool same_noise(const MeasurementModel& a, const MeasurementModel& b) {
+  return a.kind == b.kind && a.state_dims == b.state_dims &&
+         a.position_components == b.position_components && a.has_range_rate == b.has_range_rate &&
+         a.platform == b.platform && a.enu_to_body == b.enu_to_body &&
+         a.sigma.size() == b.sigma.size() && a.sigma == b.sigma;
+}
 
 /// The manoeuvre gate's filter: the profile's manoeuvre models with their white acceleration
 /// raised to branching.manoeuvre_accel_sigma, in the main filter's state layout. Each gate
@@ -200,11 +210,18 @@ void BranchLayer::narrow(int t, ImmEstimate& predicted, std::span<const int> nei
       narrowed || !weighs_clutter ? narrowed : last_motion(track, predicted.time, true);
   // In a clutter area: a plot round it in dense clutter (without last_motion_false_plots
   // every track is, from the start of the look).
+  // The gate's size is the innovation covariance's, which depends on the plot only through
+  // its measurement model: one innovation serves the neighbours that share the model.
+  const MeasurementModel* model = nullptr;
+  std::optional<Innovation> in;
   for (std::size_t k = 0; held && clutter_area == 0 && k < neighbours.size(); ++k) {
     const int j = neighbours[k];
-    const Innovation in =
-        innovate(held->modes.front(), filter().layout(), pre().plots()[j], profile_.measurement);
-    if (in.ok && in_dense_clutter(in, j)) clutter_area = 1;
+    const PlotMeasurement& plot = pre().plots()[j];
+    if (model == nullptr || !same_noise(*model, plot.model)) {
+      in = innovate(held->modes.front(), filter().layout(), plot, profile_.measurement);
+      model = &plot.model;
+    }
+    if (in->ok && in_dense_clutter(*in, j)) clutter_area = 1;
   }
   if (narrowed && clutter_area != 0) {
     // In a clutter area its non-manoeuvre association is the motion unchanged (§2.1): it
