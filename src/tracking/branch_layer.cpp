@@ -209,9 +209,9 @@ void BranchLayer::narrow(int t, ImmEstimate& predicted, std::span<const int> nei
   const std::optional<ImmEstimate> held =
       narrowed || !weighs_clutter ? narrowed : last_motion(track, predicted.time, true);
   // In a clutter area: a plot round it in dense clutter (without last_motion_false_plots
-  // every track is, from the start of the look).
-  // The gate's size is the innovation covariance's, which depends on the plot only through
-  // its measurement model: one innovation serves the neighbours that share the model.
+  // every track is, from the start of the look). The gate's size is the innovation
+  // covariance's, which depends on a plot only through its measurement model: one
+  // innovation serves the neighbours that share the model.
   const MeasurementModel* model = nullptr;
   std::optional<Innovation> in;
   for (std::size_t k = 0; held && clutter_area == 0 && k < neighbours.size(); ++k) {
