@@ -91,40 +91,61 @@ void raise_to_local_density(std::span<const PlotMeasurement> plots,
                             std::vector<double>& density) {
   // Per form: the extent of the counted plots in the components after the mapped two.
   std::unordered_map<int, std::array<std::pair<double, double>, kExtra>> extents;
-  std::unordered_map<std::uint64_t, Sums> map;
-  map.reserve(plots.size());
   for (std::size_t j = 0; j < plots.size(); ++j) {
     if (counted[j] == 0) continue;
     const PlotMeasurement& p = plots[j];
-    const int form = form_of(p);
-    auto [it, fresh] = extents.try_emplace(form);
+    auto [it, fresh] = extents.try_emplace(form_of(p));
     for (int i = 2; i < p.z.size(); ++i) {
       auto& [low, high] = it->second[i - 2];
       low = fresh ? p.z[i] : std::min(low, p.z[i]);
       high = fresh ? p.z[i] : std::max(high, p.z[i]);
     }
-    map[key(form, Grid(p, cells).cell_of(p))].add(p, +1);
   }
-  // The 3 x 3 block round each cell, summed once for all the plots in the cell.
-  std::unordered_map<std::uint64_t, Sums> blocks;
-  blocks.reserve(map.size());
+  // Each cell's sums of counted plots (in plot order), in an open-addressing table keyed by
+  // cell, and the 3 x 3 block round it, summed once for all the plots in the cell.
+  std::vector<std::uint64_t> keys(plots.size(), 0);
+  std::size_t slots = 16;
+  while (slots < 2 * plots.size()) slots *= 2;
+  std::vector<std::pair<std::uint64_t, std::int32_t>> table(slots, {0, -1});
+  const auto slot_of = [&](std::uint64_t k) {
+    std::size_t i = static_cast<std::size_t>((k * 0x9E3779B97F4A7C15ULL) >> 20) & (slots - 1);
+    while (table[i].second >= 0 && table[i].first != k) i = (i + 1) & (slots - 1);
+    return i;
+  };
+  std::vector<Sums> sums;
   for (std::size_t j = 0; j < plots.size(); ++j) {
     const PlotMeasurement& p = plots[j];
-    const int form = form_of(p);
-    const auto extent = extents.find(form);
-    if (extent == extents.end()) continue;
+    if (!extents.contains(form_of(p))) continue;
+    keys[j] = key(form_of(p), Grid(p, cells).cell_of(p));
+    auto& [k, at] = table[slot_of(keys[j])];
+    if (at < 0) {
+      k = keys[j];
+      at = static_cast<std::int32_t>(sums.size());
+      sums.emplace_back();
+    }
+    if (counted[j] != 0) sums[static_cast<std::size_t>(at)].add(p, +1);
+  }
+  std::vector<Sums> blocks(sums.size());
+  std::vector<std::uint8_t> summed(sums.size(), 0);
+  for (std::size_t j = 0; j < plots.size(); ++j) {
+    const PlotMeasurement& p = plots[j];
+    const auto extent_of = extents.find(form_of(p));
+    if (extent_of == extents.end()) continue;
+    const auto& extent = extent_of->second;
     const Grid grid(p, cells);
     const Cell c = grid.cell_of(p);
-    auto [cached, fresh] = blocks.try_emplace(key(form, c));
-    if (fresh) {
+    const auto at = static_cast<std::size_t>(table[slot_of(keys[j])].second);
+    if (!summed[at]) {
+      summed[at] = 1;
       for (std::int64_t da = -1; da <= 1; ++da) {
         for (std::int64_t db = -1; db <= 1; ++db) {
-          const auto it = map.find(key(form, {c.a + da, grid.wrapped(c.b + db)}));
-          if (it != map.end()) cached->second.add(it->second);
+          const std::int32_t n =
+              table[slot_of(key(form_of(p), {c.a + da, grid.wrapped(c.b + db)}))].second;
+          if (n >= 0) blocks[at].add(sums[static_cast<std::size_t>(n)]);
         }
       }
     }
-    Sums block = cached->second;
+    Sums block = blocks[at];
     if (counted[j] != 0) block.add(p, -1);  // not itself
     if (block.count <= 0) continue;
     // The other components (elevation, range-rate, height) span what the block's plots span:
@@ -135,7 +156,7 @@ void raise_to_local_density(std::span<const PlotMeasurement> plots,
     // uncounted plots made a density that called every plot round them clutter.
     double volume = grid.block_area(c, is_polar(p.model.kind));
     for (int i = 2; i < p.z.size(); ++i) {
-      const auto [low, high] = extent->second[i - 2];
+      const auto [low, high] = extent[i - 2];
       double width = high - low;
       if (block.count >= kMinForSpread) {
         const double n = block.count;

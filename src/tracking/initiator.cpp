@@ -91,7 +91,6 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
   positions_.clear();
   for (const PlotMeasurement& plot : plots) positions_.push_back(approximate_position(plot));
   used_.assign(plots.size(), 0);
-  index_.build(positions_, dims_);
   extend_chains(batch, plots);
   pair_with_seeds(batch, plots);
   for (std::size_t i = 0; i < plots.size(); ++i) {
@@ -139,14 +138,26 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
   }
   const double t_mid = 0.5 * (t_min + t_max);
   extensions_.clear();
+  radii_.assign(chains_.size(), -1.0);
   for (std::size_t c = 0; c < chains_.size(); ++c) {
     const Chain& chain = chains_[c];
     if (chain.last_batch == batch) continue;
-    const double sigma_last = position_sigma(chain.plots.back());
     const double dt_max = t_max - chain.time;
-    const double radius = 4.0 * (2.0 * sigma_last) + 0.5 * kMaxAcceleration * dt_max * dt_max +
-                          chain.velocity.norm() * 0.5 * (t_max - t_min);
-    index_.within(chain.position + chain.velocity * (t_mid - chain.time), radius, neighbours_);
+    radii_[c] = 4.0 * (2.0 * position_sigma(chain.plots.back())) +
+                0.5 * kMaxAcceleration * dt_max * dt_max +
+                chain.velocity.norm() * 0.5 * (t_max - t_min);
+  }
+  if (chains_.empty()) return;
+  // Cells of the median search radius: a search looks at a few cells around its centre.
+  cell_radii_ = radii_;
+  const auto median = cell_radii_.begin() + static_cast<std::ptrdiff_t>(cell_radii_.size() / 2);
+  std::nth_element(cell_radii_.begin(), median, cell_radii_.end());
+  index_.build(positions_, dims_, *median);
+  for (std::size_t c = 0; c < chains_.size(); ++c) {
+    const Chain& chain = chains_[c];
+    if (radii_[c] < 0.0) continue;
+    const double sigma_last = position_sigma(chain.plots.back());
+    index_.within(chain.position + chain.velocity * (t_mid - chain.time), radii_[c], neighbours_);
     for (const int j : neighbours_) {
       const double dt = plots[j].time - chain.time;
       if (dt <= 0.0 || same_revolution(chain.plots.back(), plots[j])) continue;
@@ -189,7 +200,7 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
 }
 
 void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasurement>& plots) {
-  if (seeds_.empty()) return;
+  if (seeds_.empty() || plots.empty()) return;
   // Seeds are kept in batch order. Each batch's seeds get their own index, searched with the
   // reach of that batch's age, so a young seed batch is not searched as far as the oldest.
   seed_groups_.clear();
@@ -205,7 +216,12 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
     }
     group.end = end;
     if (seed_indices_.size() < seed_groups_.size() + 1) seed_indices_.emplace_back();
-    seed_indices_[seed_groups_.size()].build(group_positions, dims_);
+    // Cells of the group's reach (below) from the batch's first plot: a query looks at the
+    // 2 x 2 or 3 x 3 cells around it.
+    seed_indices_[seed_groups_.size()].build(
+        group_positions, dims_,
+        spec_.max_speed * std::max(plots.front().time - group.oldest, 0.0) +
+            3.0 * (2.0 * group.max_sigma) + 1.0);
     seed_groups_.push_back(group);
     begin = end;
   }

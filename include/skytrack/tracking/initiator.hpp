@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-#include "skytrack/association/plot_index.hpp"
+#include "skytrack/association/grid_index.hpp"
 #include "skytrack/config/profile.hpp"
 #include "skytrack/core/look.hpp"
 #include "skytrack/measurement/plot_measurement.hpp"
@@ -95,13 +95,14 @@ class Initiator {
 
   // Workspaces reused every scan.
   std::vector<SeedGroup> seed_groups_;
-  std::vector<PlotIndex> seed_indices_;  // one per seed group
+  std::vector<GridIndex> seed_indices_;  // one per seed group
   std::vector<Eigen::Vector3d> seed_positions_;
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> used_;
   std::vector<Extension> extensions_;
   std::vector<int> neighbours_;
-  PlotIndex index_;
+  std::vector<double> radii_, cell_radii_;  // each chain's search radius (-1: none this batch)
+  GridIndex index_;                         // this batch's plots
 };
 
 }  // namespace skytrack

@@ -1,0 +1,95 @@
+#include "skytrack/association/grid_index.hpp"
+
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "skytrack/association/plot_index.hpp"
+
+namespace skytrack {
+namespace {
+
+std::vector<int> brute_force_within(const std::vector<Eigen::Vector3d>& points, int dims,
+                                    const Eigen::Vector3d& centre, double radius) {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    double d2 = 0.0;
+    for (int d = 0; d < dims; ++d) d2 += (centre[d] - points[i][d]) * (centre[d] - points[i][d]);
+    if (d2 <= radius * radius) out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
+// Uniform plots and a tight cluster: the cell side is only a hint of the query scale, so
+// queries far larger or smaller than it, and crowded cells, must still answer exactly.
+std::vector<Eigen::Vector3d> mixed_points(int n, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> xy(-5000.0, 5000.0), z(0.0, 2000.0), near(-20.0, 20.0);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < n; ++i) {
+    if (i % 3 == 0) {
+      points.emplace_back(1000.0 + near(rng), -700.0 + near(rng), z(rng));
+    } else {
+      points.emplace_back(xy(rng), xy(rng), z(rng));
+    }
+  }
+  return points;
+}
+
+TEST(GridIndex, WithinMatchesBruteForceAndTheKdTreeForAnyCellSide) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> xy(-6000.0, 6000.0), z(-200.0, 2200.0),
+      radius(0.0, 3000.0);
+  GridIndex grid;  // one grid, rebuilt with different sizes, dimensions and cell sides
+  PlotIndex tree;
+  std::vector<int> found, from_tree;
+  for (const int n : {700, 3, 1500, 0, 1, 60}) {
+    for (const int dims : {3, 2}) {
+      for (const double cell : {1.0, 300.0, 2500.0, 1e6, 0.0}) {
+        const std::vector<Eigen::Vector3d> points = mixed_points(n, rng);
+        grid.build(points, dims, cell);
+        tree.build(points, dims);
+        for (int q = 0; q < 100; ++q) {
+          const Eigen::Vector3d centre(xy(rng), xy(rng), z(rng));
+          const double r = q % 10 == 0 ? 30.0 : radius(rng);  // some queries in the cluster
+          const Eigen::Vector3d at = q % 10 == 0 ? points.empty() ? centre : points[0] : centre;
+          grid.within(at, r, found);
+          tree.within(at, r, from_tree);
+          EXPECT_EQ(found, brute_force_within(points, dims, at, r))
+              << n << " plots, " << dims << " dims, cell " << cell;
+          EXPECT_EQ(found, from_tree);
+        }
+      }
+    }
+  }
+}
+
+TEST(GridIndex, RadiusIsInclusiveTwoDimsIgnoresHeightAndBadInputFindsNothing) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<Eigen::Vector3d> points = {
+      {3.0, 4.0, 0.0}, {0.0, 0.0, 100.0}, {6.0, 0.0, 0.0}, {nan, 0.0, 0.0}};
+  GridIndex grid;
+  std::vector<int> found{42};
+  grid.within(Eigen::Vector3d::Zero(), 10.0, found);  // never built
+  EXPECT_TRUE(found.empty());
+  grid.build(points, 3, 2.0);
+  grid.within(Eigen::Vector3d::Zero(), 5.0, found);  // (3, 4, 0) is exactly 5 away
+  EXPECT_EQ(found, (std::vector<int>{0}));
+  grid.build(points, 2, 2.0);
+  grid.within(Eigen::Vector3d::Zero(), 5.0, found);  // height no longer counts
+  EXPECT_EQ(found, (std::vector<int>{0, 1}));
+  grid.within(Eigen::Vector3d(1e300, -1e300, 0.0), 1e200, found);  // far off: no overflow
+  EXPECT_TRUE(found.empty());
+  grid.within(Eigen::Vector3d::Zero(), -1.0, found);
+  EXPECT_TRUE(found.empty());
+  grid.within(Eigen::Vector3d::Zero(), nan, found);
+  EXPECT_TRUE(found.empty());
+  grid.within(Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), 1.0, found);
+  EXPECT_TRUE(found.empty());
+  grid.within(Eigen::Vector3d(6.0, 0.0, 0.0), 0.0, found);  // radius 0 finds a plot on top
+  EXPECT_EQ(found, (std::vector<int>{2}));
+}
+
+}  // namespace
+}  // namespace skytrack
