@@ -204,12 +204,43 @@ PlotHypothesis ImmFilter::hypothesise(const ImmEstimate& predicted,
                                       const PlotMeasurement& measurement) const noexcept {
   PlotHypothesis out;
   out.per_mode.reserve(models_.size());
+  for (int j = 0; j < mode_count(); ++j) {
+    out.per_mode.push_back(innovate(predicted.modes[j], layout_, measurement, measurement_));
+  }
+  weigh(predicted, out);
+  return out;
+}
+
+PlotHypothesis ImmFilter::hypothesise(const ImmEstimate& predicted,
+                                      const PlotMeasurement& measurement,
+                                      HypothesisShapes& shapes) const noexcept {
+  if (measurement_.update == config::MeasurementUpdate::kUnscented) {
+    return hypothesise(predicted, measurement);
+  }
+  if (!shapes.valid_ || !same_innovation_shape(shapes.model_, measurement.model)) {
+    shapes.modes_.resize(static_cast<std::size_t>(mode_count()));
+    for (int j = 0; j < mode_count(); ++j) {
+      shapes.modes_[static_cast<std::size_t>(j)] =
+          innovation_shape(predicted.modes[j], layout_, measurement.model);
+    }
+    shapes.model_ = measurement.model;
+    shapes.valid_ = true;
+  }
+  PlotHypothesis out;
+  out.per_mode.reserve(models_.size());
+  for (int j = 0; j < mode_count(); ++j) {
+    out.per_mode.push_back(innovate(shapes.modes_[static_cast<std::size_t>(j)], measurement));
+  }
+  weigh(predicted, out);
+  return out;
+}
+
+void ImmFilter::weigh(const ImmEstimate& predicted, PlotHypothesis& out) const noexcept {
   double max_log = -kInf;
   out.max_nis = -kInf;
   out.min_nis = kInf;
   for (int j = 0; j < mode_count(); ++j) {
-    out.per_mode.push_back(innovate(predicted.modes[j], layout_, measurement, measurement_));
-    const Innovation& innovation = out.per_mode.back();
+    const Innovation& innovation = out.per_mode[static_cast<std::size_t>(j)];
     if (!innovation.ok) continue;
     out.usable = true;
     out.max_nis = std::max(out.max_nis, innovation.nis);
@@ -220,7 +251,7 @@ PlotHypothesis ImmFilter::hypothesise(const ImmEstimate& predicted,
     out.max_nis = kInf;
     out.likelihood = 0.0;
     out.log_likelihood = -kInf;
-    return out;
+    return;
   }
   double scaled = 0.0;  // log-sum-exp of log c_j + log N_j
   for (int j = 0; j < mode_count() && std::isfinite(max_log); ++j) {
@@ -231,7 +262,6 @@ PlotHypothesis ImmFilter::hypothesise(const ImmEstimate& predicted,
   }
   out.log_likelihood = scaled > 0.0 ? max_log + std::log(scaled) : -kInf;
   out.likelihood = std::exp(out.log_likelihood);
-  return out;
 }
 
 ImmEstimate ImmFilter::update(const ImmEstimate& predicted,

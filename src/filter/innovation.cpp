@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <type_traits>
+#include <variant>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -23,79 +25,116 @@ void fail_innovation(Innovation& out) noexcept {
 
 namespace {
 
-/// finish_innovation with S factorised at its compile-time size M, and the gain at N x M when
-/// the state size is a common one (a runtime-size solve costs several times more).
+/// The gain K = cross S^-1 and log det S from S's factor at its compile-time size M (S^-1 in
+/// closed form when the state size is a common one: a runtime-size solve costs several
+/// times more).
 template <int M>
-void finish_fixed(const GainMat& cross, Innovation& out) noexcept {
-  const Eigen::LLT<Eigen::Matrix<double, M, M>> llt(out.S);
+void factorise_fixed(const GainMat& cross, InnovationShape& shape) noexcept {
+  Innovation& out = shape.shared;
+  const auto& llt = shape.factor.emplace<Eigen::LLT<Eigen::Matrix<double, M, M>>>(out.S);
   if (llt.info() != Eigen::Success) {
     fail_innovation(out);
     return;
   }
-  // K = cross S^-1; S^-1 in closed form at these sizes (S is positive definite here).
   if (!with_fixed_state_size(static_cast<int>(cross.rows()), [&](auto n) {
         constexpr int N = decltype(n)::value;
         const Eigen::Matrix<double, M, M> s = out.S;
         const Eigen::Matrix<double, N, M> c = cross;
-        const Eigen::Matrix<double, N, M> gain = c * s.inverse();
+        const Eigen::Matrix<double, N, M> gain = c * s.inverse();  // S positive definite
         out.gain = gain;
       })) {
     out.gain = llt.solve(cross.transpose()).transpose();
   }
-  const Eigen::Matrix<double, M, 1> whitened = llt.matrixL().solve(out.residual);
-  out.nis = whitened.squaredNorm();
-  const double log_det = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
-  out.log_likelihood = -0.5 * (M * std::log(2.0 * std::numbers::pi) + log_det + out.nis);
-  out.ok = std::isfinite(out.log_likelihood) && out.gain.allFinite();
+  shape.log_det = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+  out.ok = out.gain.allFinite();
   if (!out.ok) fail_innovation(out);
 }
 
 }  // namespace
 
-void finish_innovation(const GainMat& cross, Innovation& out) noexcept {
-  if (!out.S.allFinite() || !out.residual.allFinite() || !cross.allFinite()) {
+void factorise(const GainMat& cross, InnovationShape& shape) noexcept {
+  Innovation& out = shape.shared;
+  if (!out.S.allFinite() || !cross.allFinite()) {
     fail_innovation(out);
     return;
   }
   switch (out.S.rows()) {
     case 2:
-      return finish_fixed<2>(cross, out);
+      return factorise_fixed<2>(cross, shape);
     case 3:
-      return finish_fixed<3>(cross, out);
+      return factorise_fixed<3>(cross, shape);
     case 4:
-      return finish_fixed<4>(cross, out);
+      return factorise_fixed<4>(cross, shape);
     default:
       break;
   }
-  const Eigen::LLT<MeasMat> llt(out.S);
+  const auto& llt = shape.factor.emplace<Eigen::LLT<MeasMat>>(out.S);
   if (llt.info() != Eigen::Success) {
     fail_innovation(out);
     return;
   }
   out.gain = llt.solve(cross.transpose()).transpose();  // K = cross S^-1, S symmetric
-  const MeasVec whitened = llt.matrixL().solve(out.residual);
-  out.nis = whitened.squaredNorm();
-  const double log_det = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
-  const double m = static_cast<double>(out.residual.size());
-  out.log_likelihood = -0.5 * (m * std::log(2.0 * std::numbers::pi) + log_det + out.nis);
-  out.ok = std::isfinite(out.log_likelihood) && out.gain.allFinite();
+  shape.log_det = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+  out.ok = out.gain.allFinite();
   if (!out.ok) fail_innovation(out);
+}
+
+void whiten(const InnovationShape& shape, Innovation& out) noexcept {
+  if (!shape.shared.ok || !out.residual.allFinite()) {
+    fail_innovation(out);
+    return;
+  }
+  std::visit(
+      [&](const auto& llt) {
+        using Factor = std::decay_t<decltype(llt)>;
+        if constexpr (!std::is_same_v<Factor, std::monostate>) {
+          constexpr int M = Factor::MatrixType::RowsAtCompileTime;
+          if constexpr (M == Eigen::Dynamic) {
+            const MeasVec whitened = llt.matrixL().solve(out.residual);
+            out.nis = whitened.squaredNorm();
+            const double m = static_cast<double>(out.residual.size());
+            out.log_likelihood =
+                -0.5 * (m * std::log(2.0 * std::numbers::pi) + shape.log_det + out.nis);
+          } else {
+            const Eigen::Matrix<double, M, 1> whitened = llt.matrixL().solve(out.residual);
+            out.nis = whitened.squaredNorm();
+            out.log_likelihood =
+                -0.5 * (M * std::log(2.0 * std::numbers::pi) + shape.log_det + out.nis);
+          }
+        }
+      },
+      shape.factor);
+  out.ok = std::isfinite(out.log_likelihood);
+  if (!out.ok) fail_innovation(out);
+}
+
+void finish_innovation(const GainMat& cross, Innovation& out) noexcept {
+  InnovationShape shape;
+  shape.shared.S = out.S;
+  factorise(cross, shape);
+  out.gain = shape.shared.gain;
+  whiten(shape, out);
 }
 
 }  // namespace filter_detail
 
-namespace {
-
-void innovate_ekf(const Gaussian& predicted, const StateLayout& layout,
-                  const PlotMeasurement& measurement, Innovation& out) noexcept {
-  const MeasurementModel& model = measurement.model;
+InnovationShape innovation_shape(const Gaussian& predicted, const StateLayout& layout,
+                                 const MeasurementModel& model) noexcept {
+  InnovationShape shape;
+  Innovation& out = shape.shared;
+  const int n = layout.size();
+  if (predicted.mean.size() != n || predicted.covariance.rows() != n ||
+      predicted.covariance.cols() != n || model.state_dims != layout.dims) {
+    filter_detail::fail_innovation(out);
+    return shape;
+  }
   out.H = model.jacobian(layout, predicted.mean);
-  out.residual = model.residual(measurement.z, model.measure(layout, predicted.mean));
+  shape.expected = model.measure(layout, predicted.mean);
   out.R = model.noise();
   GainMat cross;  // P H'
   const bool fixed = with_fixed_sizes(
-      static_cast<int>(out.H.cols()), static_cast<int>(out.H.rows()), [&](auto n, auto m) {
-        constexpr int N = decltype(n)::value, M = decltype(m)::value;
+      static_cast<int>(out.H.cols()), static_cast<int>(out.H.rows()), [&](auto sn, auto sm) {
+        constexpr int N = decltype(sn)::value, M = decltype(sm)::value;
         const Eigen::Matrix<double, N, N> p = predicted.covariance;
         const Eigen::Matrix<double, M, N> h = out.H;
         const Eigen::Matrix<double, N, M> c = p * h.transpose();
@@ -108,10 +147,28 @@ void innovate_ekf(const Gaussian& predicted, const StateLayout& layout,
     out.S.noalias() = out.H * cross;
     out.S += out.R;
   }
-  filter_detail::finish_innovation(cross, out);
+  filter_detail::factorise(cross, shape);
+  return shape;
 }
 
-}  // namespace
+Innovation innovate(const InnovationShape& shape, const PlotMeasurement& measurement) noexcept {
+  Innovation out = shape.shared;
+  const MeasurementModel& model = measurement.model;
+  if (measurement.z.size() != model.size() || shape.expected.size() != model.size()) {
+    filter_detail::fail_innovation(out);
+    return out;
+  }
+  out.residual = model.residual(measurement.z, shape.expected);
+  filter_detail::whiten(shape, out);
+  return out;
+}
+
+bool same_innovation_shape(const MeasurementModel& a, const MeasurementModel& b) noexcept {
+  return a.kind == b.kind && a.state_dims == b.state_dims &&
+         a.position_components == b.position_components && a.has_range_rate == b.has_range_rate &&
+         a.platform == b.platform && a.enu_to_body == b.enu_to_body &&
+         a.sigma.size() == b.sigma.size() && a.sigma == b.sigma;
+}
 
 Innovation innovate(const Gaussian& predicted, const StateLayout& layout,
                     const PlotMeasurement& measurement,
@@ -126,10 +183,9 @@ Innovation innovate(const Gaussian& predicted, const StateLayout& layout,
   }
   if (spec.update == config::MeasurementUpdate::kUnscented) {
     filter_detail::innovate_unscented(predicted, layout, measurement, spec.unscented, out);
-  } else {
-    innovate_ekf(predicted, layout, measurement, out);
+    return out;
   }
-  return out;
+  return innovate(innovation_shape(predicted, layout, measurement.model), measurement);
 }
 
 namespace {

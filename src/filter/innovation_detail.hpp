@@ -5,8 +5,15 @@
 
 namespace skytrack::filter_detail {
 
-/// Factorises S, forms K = cross S^-1 (cross = P H' or Pxz), NIS and log N(nu; 0, S).
-/// Sets out.ok; on failure the likelihood is -inf and the NIS +inf.
+/// Factorises shape.shared.S and forms the gain K = cross S^-1 (cross = P H' or Pxz) and
+/// log det S. Sets shape.shared.ok.
+void factorise(const GainMat& cross, InnovationShape& shape) noexcept;
+
+/// NIS and log N(nu; 0, S) of out.residual against the shape's factor of S. Sets out.ok; on
+/// failure the likelihood is -inf and the NIS +inf.
+void whiten(const InnovationShape& shape, Innovation& out) noexcept;
+
+/// Both, for an innovation whose S and residual are set (the unscented one).
 void finish_innovation(const GainMat& cross, Innovation& out) noexcept;
 
 /// Marks `out` as failed.

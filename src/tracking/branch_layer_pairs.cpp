@@ -62,13 +62,15 @@ void BranchLayer::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) {
   const double time = std::max(Gater::nearest_time(pre(), neighbours_, centre), prior.time);
   const ImmEstimate predicted = manoeuvre_prediction(prior, time);
   if (for_update) gater().predicted()[t] = filter().predict(track.estimate, time);
+  manoeuvre_shapes_.clear();
+  shapes_.clear();
   for (const int j : neighbours_) {
-    const PlotHypothesis m = manoeuvre_.hypothesise(predicted, pre().plots()[j]);
+    const PlotHypothesis m = manoeuvre_.hypothesise(predicted, pre().plots()[j], manoeuvre_shapes_);
     if (!m.usable || m.min_nis > manoeuvre_threshold_[pre().plots()[j].model.size()]) continue;
     // Only an updating pair needs the plot against the track's own IMM prediction.
     PlotHypothesis hypothesis;
     if (for_update) {
-      hypothesis = filter().hypothesise(gater().predicted()[t], pre().plots()[j]);
+      hypothesis = filter().hypothesise(gater().predicted()[t], pre().plots()[j], shapes_);
       if (!hypothesis.usable) continue;
     }
     manoeuvre_candidates_.push_back({t, j, std::move(hypothesis), m.likelihood});

@@ -92,8 +92,9 @@ void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrac
         update_time == mid_time ? std::move(mid_estimate) : filter.predict(estimate, update_time);
     if (!non_manoeuvre) continue;
     hooks.narrow(static_cast<int>(t), predicted_[t], neighbours_, clutter_area_[t]);
+    shapes_.clear();
     for (const int j : neighbours_) {
-      PlotHypothesis hypothesis = filter.hypothesise(predicted_[t], pre.plots()[j]);
+      PlotHypothesis hypothesis = filter.hypothesise(predicted_[t], pre.plots()[j], shapes_);
       if (!hypothesis.usable) continue;
       // A plot inside any mode's gate (the union of the modes' gates), or the gate of the
       // prediction the hook narrowed it to, is a candidate.

@@ -65,6 +65,20 @@ struct PlotHypothesis {
   bool usable = false;          // at least one mode's innovation is ok
 };
 
+/// The innovation shapes (innovation.hpp) of one prediction's modes for one measurement
+/// model: hypothesise() makes them for the first plot and reuses them for the next plots of
+/// the same model. Clear it whenever the prediction changes.
+class HypothesisShapes {
+ public:
+  void clear() noexcept { valid_ = false; }
+
+ private:
+  friend class ImmFilter;
+  bool valid_ = false;
+  MeasurementModel model_;
+  std::vector<InnovationShape> modes_;
+};
+
 class ImmFilter {
  public:
   /// `transition`: Markov matrix p_ij = P(mode j now | mode i before), rows sum to 1, given
@@ -101,6 +115,10 @@ class ImmFilter {
   /// Innovations of one plot against every mode of a prediction.
   PlotHypothesis hypothesise(const ImmEstimate& predicted,
                              const PlotMeasurement& measurement) const noexcept;
+  /// The same, with the plot-independent parts kept in `shapes` across the plots of one
+  /// prediction (EKF updates; the unscented update innovates each plot whole).
+  PlotHypothesis hypothesise(const ImmEstimate& predicted, const PlotMeasurement& measurement,
+                             HypothesisShapes& shapes) const noexcept;
 
   /// Per-mode PDA update with the track's association weights and the mode probabilities
   /// described at the top of this file. hypotheses[i] pairs with beta_plots[i]; the weights
@@ -128,6 +146,8 @@ class ImmFilter {
 
  private:
   ImmEstimate predict_modes(const ImmEstimate& posterior, double time, int certain) const noexcept;
+  /// A hypothesis' likelihood (mixed over the modes' priors) and NIS range from its per_mode.
+  void weigh(const ImmEstimate& predicted, PlotHypothesis& out) const noexcept;
   std::vector<AnyMotionModel> models_;
   std::vector<std::string> names_;
   Eigen::MatrixXd transition_;

@@ -11,6 +11,10 @@
 //   Update in Joseph form (Bar-Shalom et al. 2001, ch. 5):
 //     P+ = (I - K H) P (I - K H)' + K R K'; the unscented update uses P - K S K'.
 // S is factorised once (LLT) and solved against; a failed factorisation gives ok = false.
+#include <variant>
+
+#include <Eigen/Cholesky>
+
 #include "skytrack/config/profile.hpp"
 #include "skytrack/filter/state.hpp"
 #include "skytrack/measurement/plot_measurement.hpp"
@@ -33,6 +37,28 @@ struct Innovation {
 Innovation innovate(const Gaussian& predicted, const StateLayout& layout,
                     const PlotMeasurement& measurement,
                     const config::MeasurementSpec& spec) noexcept;
+
+/// The parts of an EKF innovation that depend on a plot only through its measurement model
+/// (its form, sensor geometry and noise): against one prediction, every plot of one model
+/// has the same h(x), H, R, S, factor of S and gain. Made once, they serve all such plots.
+struct InnovationShape {
+  Innovation shared;  // H, R, S and gain (no residual); ok = false: no plot can be innovated
+  MeasVec expected;   // h(x)
+  std::variant<std::monostate, Eigen::LLT<Eigen::Matrix2d>, Eigen::LLT<Eigen::Matrix3d>,
+               Eigen::LLT<Eigen::Matrix4d>, Eigen::LLT<MeasMat>>
+      factor;  // of S, at its compile-time size when it has one
+  double log_det = 0.0;
+};
+
+/// The EKF innovation's shape of a prediction for plots of `model`.
+InnovationShape innovation_shape(const Gaussian& predicted, const StateLayout& layout,
+                                 const MeasurementModel& model) noexcept;
+
+/// innovate() by EKF for a plot of the model `shape` was made for: the same numbers.
+Innovation innovate(const InnovationShape& shape, const PlotMeasurement& measurement) noexcept;
+
+/// True when plots of models `a` and `b` share an innovation shape against any prediction.
+bool same_innovation_shape(const MeasurementModel& a, const MeasurementModel& b) noexcept;
 
 /// x + K nu and the Joseph-form covariance (symmetrised). Returns `predicted` unchanged when
 /// the innovation is not ok.

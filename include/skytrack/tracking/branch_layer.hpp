@@ -246,6 +246,7 @@ class BranchLayer final : public BranchHooks {
   std::vector<std::uint8_t> touched_;  // per track: updated or created this batch
   std::vector<BranchChange> changes_;
   std::vector<int> neighbours_;
+  HypothesisShapes shapes_, manoeuvre_shapes_;  // of one track's predictions
 };
 
 }  // namespace skytrack

@@ -116,6 +116,7 @@ class Gater {
   std::vector<std::uint8_t> covered_, took_candidates_, clutter_area_;  // per track
   std::vector<std::uint8_t> gated_;                                     // per plot
   std::vector<int> neighbours_;
+  HypothesisShapes shapes_;  // of one track's prediction, across its neighbours
 };
 
 }  // namespace skytrack
