@@ -217,15 +217,7 @@ PlotHypothesis ImmFilter::hypothesise(const ImmEstimate& predicted,
   if (measurement_.update == config::MeasurementUpdate::kUnscented) {
     return hypothesise(predicted, measurement);
   }
-  if (!shapes.valid_ || !same_innovation_shape(shapes.model_, measurement.model)) {
-    shapes.modes_.resize(static_cast<std::size_t>(mode_count()));
-    for (int j = 0; j < mode_count(); ++j) {
-      shapes.modes_[static_cast<std::size_t>(j)] =
-          innovation_shape(predicted.modes[j], layout_, measurement.model);
-    }
-    shapes.model_ = measurement.model;
-    shapes.valid_ = true;
-  }
+  shape(predicted, measurement, shapes);
   PlotHypothesis out;
   out.per_mode.reserve(models_.size());
   for (int j = 0; j < mode_count(); ++j) {
@@ -233,6 +225,30 @@ PlotHypothesis ImmFilter::hypothesise(const ImmEstimate& predicted,
   }
   weigh(predicted, out);
   return out;
+}
+
+double ImmFilter::min_nis(const ImmEstimate& predicted, const PlotMeasurement& measurement,
+                          HypothesisShapes& shapes) const noexcept {
+  if (measurement_.update == config::MeasurementUpdate::kUnscented) return -kInf;
+  shape(predicted, measurement, shapes);
+  double least = kInf;
+  for (const InnovationShape& mode : shapes.modes_) {
+    const double nis = innovation_nis(mode, measurement);
+    if (std::isfinite(nis)) least = std::min(least, nis);
+  }
+  return least;
+}
+
+void ImmFilter::shape(const ImmEstimate& predicted, const PlotMeasurement& measurement,
+                      HypothesisShapes& shapes) const noexcept {
+  if (shapes.valid_ && same_innovation_shape(shapes.model_, measurement.model)) return;
+  shapes.modes_.resize(static_cast<std::size_t>(mode_count()));
+  for (int j = 0; j < mode_count(); ++j) {
+    shapes.modes_[static_cast<std::size_t>(j)] =
+        innovation_shape(predicted.modes[j], layout_, measurement.model);
+  }
+  shapes.model_ = measurement.model;
+  shapes.valid_ = true;
 }
 
 void ImmFilter::weigh(const ImmEstimate& predicted, PlotHypothesis& out) const noexcept {

@@ -163,6 +163,18 @@ Innovation innovate(const InnovationShape& shape, const PlotMeasurement& measure
   return out;
 }
 
+double innovation_nis(const InnovationShape& shape, const PlotMeasurement& measurement) noexcept {
+  Innovation out;
+  const MeasurementModel& model = measurement.model;
+  if (!shape.shared.ok || measurement.z.size() != model.size() ||
+      shape.expected.size() != model.size()) {
+    return std::numeric_limits<double>::infinity();
+  }
+  out.residual = model.residual(measurement.z, shape.expected);
+  filter_detail::whiten(shape, out);
+  return out.ok ? out.nis : std::numeric_limits<double>::infinity();
+}
+
 bool same_innovation_shape(const MeasurementModel& a, const MeasurementModel& b) noexcept {
   return a.kind == b.kind && a.state_dims == b.state_dims &&
          a.position_components == b.position_components && a.has_range_rate == b.has_range_rate &&

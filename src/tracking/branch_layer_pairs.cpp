@@ -65,6 +65,10 @@ void BranchLayer::gate_manoeuvre(const PlotScan& scan, int t, bool for_update) {
   manoeuvre_shapes_.clear();
   shapes_.clear();
   for (const int j : neighbours_) {
+    if (manoeuvre_.min_nis(predicted, pre().plots()[j], manoeuvre_shapes_) >
+        manoeuvre_threshold_[pre().plots()[j].model.size()]) {
+      continue;
+    }
     const PlotHypothesis m = manoeuvre_.hypothesise(predicted, pre().plots()[j], manoeuvre_shapes_);
     if (!m.usable || m.min_nis > manoeuvre_threshold_[pre().plots()[j].model.size()]) continue;
     // Only an updating pair needs the plot against the track's own IMM prediction.

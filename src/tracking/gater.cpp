@@ -94,11 +94,16 @@ void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrac
     hooks.narrow(static_cast<int>(t), predicted_[t], neighbours_, clutter_area_[t]);
     shapes_.clear();
     for (const int j : neighbours_) {
-      PlotHypothesis hypothesis = filter.hypothesise(predicted_[t], pre.plots()[j], shapes_);
-      if (!hypothesis.usable) continue;
       // A plot inside any mode's gate (the union of the modes' gates), or the gate of the
       // prediction the hook narrowed it to, is a candidate.
-      if (hypothesis.min_nis > gate_threshold_[pre.plots()[j].model.size()]) continue;
+      if (filter.min_nis(predicted_[t], pre.plots()[j], shapes_) >
+          gate_threshold_[pre.plots()[j].model.size()]) {
+        continue;
+      }
+      PlotHypothesis hypothesis = filter.hypothesise(predicted_[t], pre.plots()[j], shapes_);
+      if (!hypothesis.usable || hypothesis.min_nis > gate_threshold_[pre.plots()[j].model.size()]) {
+        continue;
+      }
       gated_[j] = 1;
       took_candidates_[t] = 1;
       const double likelihood = hypothesis.likelihood;

@@ -53,7 +53,7 @@ void expect_same(const PlotHypothesis& whole, const PlotHypothesis& shaped) {
   }
 }
 
-TEST(HypothesisShapes, KeptShapesGiveEachPlotTheNumbersOfAWholeInnovation) {
+TEST(HypothesisShapes, KeptShapesGiveEachPlotTheNumbersOfAWholeInnovationAndItsNis) {
   const ImmFilter filter = two_cv_modes();
   // Plots of three measurement models in turn (two polar noises and a Cartesian one), so the
   // kept shapes are remade whenever the model changes, and a plot with a NaN.
@@ -74,6 +74,9 @@ TEST(HypothesisShapes, KeptShapesGiveEachPlotTheNumbersOfAWholeInnovation) {
       const PlotHypothesis whole = filter.hypothesise(predicted, plot);
       const PlotHypothesis shaped = filter.hypothesise(predicted, plot, shapes);
       expect_same(whole, shaped);
+      // The cheap gate test: the same smallest NIS, +infinity for a plot no mode can take.
+      EXPECT_EQ(filter.min_nis(predicted, plot, shapes),
+                whole.usable ? whole.min_nis : std::numeric_limits<double>::infinity());
     }
   }
   EXPECT_FALSE(

@@ -119,6 +119,12 @@ class ImmFilter {
   /// prediction (EKF updates; the unscented update innovates each plot whole).
   PlotHypothesis hypothesise(const ImmEstimate& predicted, const PlotMeasurement& measurement,
                              HypothesisShapes& shapes) const noexcept;
+  /// The smallest NIS of a plot over the modes whose innovation is ok (+infinity when none
+  /// is), as hypothesise() gives it, from the kept shapes without the rest of the
+  /// hypothesis: the cheap test of whether a plot lies in any mode's gate. The unscented
+  /// update has no cheap test: -infinity (test the whole hypothesis).
+  double min_nis(const ImmEstimate& predicted, const PlotMeasurement& measurement,
+                 HypothesisShapes& shapes) const noexcept;
 
   /// Per-mode PDA update with the track's association weights and the mode probabilities
   /// described at the top of this file. hypotheses[i] pairs with beta_plots[i]; the weights
@@ -146,6 +152,9 @@ class ImmFilter {
 
  private:
   ImmEstimate predict_modes(const ImmEstimate& posterior, double time, int certain) const noexcept;
+  /// The kept shapes, remade when `measurement` has another model than the last plot's.
+  void shape(const ImmEstimate& predicted, const PlotMeasurement& measurement,
+             HypothesisShapes& shapes) const noexcept;
   /// A hypothesis' likelihood (mixed over the modes' priors) and NIS range from its per_mode.
   void weigh(const ImmEstimate& predicted, PlotHypothesis& out) const noexcept;
   std::vector<AnyMotionModel> models_;

@@ -57,6 +57,9 @@ InnovationShape innovation_shape(const Gaussian& predicted, const StateLayout& l
 /// innovate() by EKF for a plot of the model `shape` was made for: the same numbers.
 Innovation innovate(const InnovationShape& shape, const PlotMeasurement& measurement) noexcept;
 
+/// The NIS innovate(shape, measurement) gives (+infinity when it is not ok), without the rest.
+double innovation_nis(const InnovationShape& shape, const PlotMeasurement& measurement) noexcept;
+
 /// True when plots of models `a` and `b` share an innovation shape against any prediction.
 bool same_innovation_shape(const MeasurementModel& a, const MeasurementModel& b) noexcept;
 
