@@ -23,6 +23,12 @@ bool same_revolution(const PlotMeasurement& a, const PlotMeasurement& b) {
   return a.sensor == b.sensor && b.sweep - a.sweep <= kHalfTurn;
 }
 
+/// Euclidean distance in the first `dims` coordinates (2: horizontal; otherwise 3-D).
+double distance_in(const Eigen::Vector3d& a, const Eigen::Vector3d& b, int dims) {
+  const Eigen::Vector3d d = a - b;
+  return dims == 2 ? d.head<2>().norm() : d.norm();
+}
+
 /// Range sigma of a polar plot; position_sigma for a Cartesian one.
 double range_sigma(const PlotMeasurement& plot) {
   return is_polar(plot.model.kind) ? plot.model.sigma[0] : position_sigma(plot);
@@ -164,7 +170,7 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
       const Eigen::Vector3d expected = chain.position + chain.velocity * dt;
       const double manoeuvre = 0.5 * kMaxAcceleration * dt * dt;
       const double gate = 4.0 * (sigma_last + position_sigma(plots[j])) + manoeuvre;
-      const double d = (positions_[j] - expected).head(dims_).norm();
+      const double d = distance_in(positions_[j], expected, dims_);
       if (d >= gate) continue;
       // A radar measures range far better than angle: along the line of sight the gate is
       // the ranges' own four sigma (plus the manoeuvre), not the cross-range one.
@@ -247,7 +253,7 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
         // A plot of a later revolution than the seed's (a rotating antenna's next plot of a
         // target may come before the beam has passed the seed's position again).
         if (dt <= 0.0 || seed.batch == batch || same_revolution(seed.plot, plots[i])) continue;
-        const double distance = (positions_[i] - seed.position).head(dims_).norm();
+        const double distance = distance_in(positions_[i], seed.position, dims_);
         const double slack = 3.0 * (position_sigma(plots[i]) + position_sigma(seed.plot));
         const double speed_low = (distance - slack) / dt, speed_high = (distance + slack) / dt;
         if (speed_high < spec_.min_speed || speed_low > spec_.max_speed) continue;
