@@ -175,8 +175,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
       for (const Gated& g : gated_) tracks_[g.track].unresolved = true;
       continue;
     }
-    const bool confirmed = tracks_[gated_.front().track].status == ExtendedTrackStatus::kConfirmed;
-    if (!(spec_.split_by_clusters && confirmed && split_by_clusters(group))) split_shared(group);
+    split_shared(group);
   }
   // After the gated partitions, so a track is known to have found none of its own.
   std::size_t kept = 0;

@@ -130,9 +130,6 @@ struct ExtendedSpec {
   /// over that scan is redone with the acceleration state's mean at zero (covariance kept),
   /// so an acceleration estimated before the miss does not carry the coast off the object.
   bool coast_constant_velocity = true;
-  /// A partition confirmed tracks share is fitted as one cluster per track (not started at
-  /// the tracks) and the clusters are given to the tracks as wholes (extended_cluster_split.cpp).
-  bool split_by_clusters = true;
   bool operator==(const ExtendedSpec&) const = default;
 };
 

@@ -91,7 +91,6 @@ class ExtendedTracker {
   Eigen::Matrix2d association_extent(const ExtendedTrack& track) const noexcept;
   bool crossing_unresolved() const noexcept;
   void split_shared(const std::vector<int>& group);
-  bool split_by_clusters(const std::vector<int>& group);
   bool claim_by_confirmed(const std::vector<int>& group);
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
   void two_point_velocity(ExtendedTrack& track) const noexcept;
