@@ -204,6 +204,7 @@ void read_extended(YamlSection s, TrackingProfile& p) {
   s.number("initial_speed_sigma", e.initial_speed_sigma, Range{1e-3, kMaxSpeed});
   s.number("initial_accel_sigma", e.initial_accel_sigma, Range{1e-3, kMaxAccel});
   s.number("initial_extent_axis", e.initial_extent_axis, Range{1e-3, 1e5});
+  s.boolean("coast_constant_velocity", e.coast_constant_velocity);
   s.finish();
 }
 

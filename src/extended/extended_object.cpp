@@ -37,6 +37,14 @@ KinMat process_noise(const MotionSpec& motion, double dt) noexcept {
   return Q;
 }
 
+void coast_constant_velocity(KinVec& x, const Eigen::Vector2d& prior_accel, double dt) noexcept {
+  for (int axis = 0; axis < 2; ++axis) {
+    x[kPos[axis]] -= 0.5 * dt * dt * prior_accel[axis];
+    x[kVel[axis]] -= dt * prior_accel[axis];
+    x[kAcc[axis]] = 0.0;
+  }
+}
+
 PosMat position_matrix() noexcept {
   PosMat H = PosMat::Zero();
   H(0, 0) = 1.0;

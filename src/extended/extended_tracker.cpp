@@ -102,8 +102,10 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
 
   association_extents_.clear();
   was_unresolved_.clear();
+  prior_accel_.clear();
   for (ExtendedTrack& track : tracks_) {
     was_unresolved_.push_back(track.unresolved);
+    prior_accel_.emplace_back(track.object.x[4], track.object.x[5]);
     if (dt > 0.0) estimator_.predict(track.object, dt);
     track.plots = 0;
     track.unresolved = false;
@@ -186,7 +188,14 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     const std::vector<int>& plots = track_plots_[t];
     // Fewer plots than start a track are taken as clutter in a scan the object was missed:
     // one stray plot would drag the centre, velocity and extent off the object.
-    if (static_cast<int>(plots.size()) < std::max(1, spec_.min_partition_plots)) continue;
+    if (static_cast<int>(plots.size()) < std::max(1, spec_.min_partition_plots)) {
+      // Unseen: coast at constant velocity (the acceleration estimated before is no evidence
+      // that the object keeps accelerating; extrapolated it carries the coast off).
+      if (spec_.coast_constant_velocity && scan_dt_ > 0.0) {
+        coast_constant_velocity(track.object.x, prior_accel_[t], scan_dt_);
+      }
+      continue;
+    }
     plot_buffer_.clear();
     Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
     for (int i : plots) plot_buffer_.push_back(positions_[i]), noise += noises_[i];

@@ -33,6 +33,10 @@ struct ExtendedObject {
 KinMat transition(const MotionSpec& motion, double dt) noexcept;
 /// G Q2 G', G = [dt^2/2, dt, 1]' per axis, Q2 = diag(q^2, q^2).
 KinMat process_noise(const MotionSpec& motion, double dt) noexcept;
+/// A coast without the acceleration state: x predicted over dt from a state whose
+/// acceleration was `prior_accel` becomes the constant-velocity prediction of that state
+/// (position less dt^2/2 a, velocity less dt a, acceleration 0); the covariance is kept.
+void coast_constant_velocity(KinVec& x, const Eigen::Vector2d& prior_accel, double dt) noexcept;
 /// H = [1 0 0 0 0 0; 0 0 1 0 0 0].
 PosMat position_matrix() noexcept;
 

@@ -126,6 +126,10 @@ struct ExtendedSpec {
   /// [m] floor of a new track's semi-axes, and of the semi-axes association uses (gate,
   /// split of a shared partition), so a collapsed estimate does not shrink the gate.
   double initial_extent_axis = 50.0;
+  /// A track that takes no plots in a scan coasts at constant velocity: its prediction
+  /// over that scan is redone with the acceleration state's mean at zero (covariance kept),
+  /// so an acceleration estimated before the miss does not carry the coast off the object.
+  bool coast_constant_velocity = true;
   bool operator==(const ExtendedSpec&) const = default;
 };
 

@@ -113,6 +113,7 @@ class ExtendedTracker {
   std::vector<Gated> gated_;
   std::vector<Eigen::Matrix2d> association_extents_;  // per track, this scan
   std::vector<char> was_unresolved_;                  // per track, the last scan's flag
+  std::vector<Eigen::Vector2d> prior_accel_;          // per track, acceleration before predict
   std::vector<Eigen::Vector2d> split_centre_;         // per gating track, its centre in the split
   std::vector<Eigen::Matrix2d> split_cov_;
   std::vector<int> split_owner_;  // per plot of the partition, its index into gated_

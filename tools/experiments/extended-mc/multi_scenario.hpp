@@ -17,6 +17,7 @@ struct MultiResult {
   double centre_rmse = 0.0;         // [m]
   double missed = 0.0;              // fraction of object-scans with no confirmed track on it
   double number_changes = 0.0;      // per object per run: the number on it changed
+  long number_change_count = 0;     // the same, summed over the runs' objects
   double objects_one_number = 0.0;  // fraction of objects tracked with one number all run
   double false_tracks = 0.0;        // confirmed tracks on no object, mean per scan
   double scan_cost_us = 0.0;        // [us] mean ExtendedTracker::process per scan
