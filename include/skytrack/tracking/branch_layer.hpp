@@ -202,6 +202,7 @@ class BranchLayer final : public BranchHooks {
     Sphere reach;
     std::vector<Sphere> modes;  // each manoeuvre model's region (reach is their union's)
     ImmEstimate predicted;      // its manoeuvre prediction to the last plot time asked for
+    HypothesisShapes shapes;    // of that prediction
   };
   std::vector<LostFather> lost_fathers_;
   std::vector<int> confirmed_now_;  // fathers confirmed in this batch
