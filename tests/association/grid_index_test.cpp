@@ -7,20 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "skytrack/association/plot_index.hpp"
+#include "spatial_index_test_support.hpp"
 
 namespace skytrack {
 namespace {
-
-std::vector<int> brute_force_within(const std::vector<Eigen::Vector3d>& points, int dims,
-                                    const Eigen::Vector3d& centre, double radius) {
-  std::vector<int> out;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    double d2 = 0.0;
-    for (int d = 0; d < dims; ++d) d2 += (centre[d] - points[i][d]) * (centre[d] - points[i][d]);
-    if (d2 <= radius * radius) out.push_back(static_cast<int>(i));
-  }
-  return out;
-}
 
 // Uniform plots and a tight cluster: the cell side is only a hint of the query scale, so
 // queries far larger or smaller than it, and crowded cells, must still answer exactly.
@@ -56,7 +46,7 @@ TEST(GridIndex, WithinMatchesBruteForceAndTheKdTreeForAnyCellSide) {
           const Eigen::Vector3d at = q % 10 == 0 ? points.empty() ? centre : points[0] : centre;
           grid.within(at, r, found);
           tree.within(at, r, from_tree);
-          EXPECT_EQ(found, brute_force_within(points, dims, at, r))
+          EXPECT_EQ(found, test::brute_force_within(points, dims, at, r))
               << n << " plots, " << dims << " dims, cell " << cell;
           EXPECT_EQ(found, from_tree);
         }

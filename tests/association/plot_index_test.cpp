@@ -6,20 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include "spatial_index_test_support.hpp"
+
 namespace skytrack {
 namespace {
-
-// Same arithmetic as the tree's metric (sum of squared differences in axis order).
-std::vector<int> brute_force_within(const std::vector<Eigen::Vector3d>& points, int dims,
-                                    const Eigen::Vector3d& centre, double radius) {
-  std::vector<int> out;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    double d2 = 0.0;
-    for (int d = 0; d < dims; ++d) d2 += (centre[d] - points[i][d]) * (centre[d] - points[i][d]);
-    if (d2 <= radius * radius) out.push_back(static_cast<int>(i));
-  }
-  return out;
-}
 
 std::vector<Eigen::Vector3d> random_points(int n, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> xy(-5000.0, 5000.0), z(0.0, 2000.0);
@@ -44,7 +34,8 @@ TEST(PlotIndex, WithinMatchesBruteForceIn2dAnd3dAcrossRebuilds) {
         const Eigen::Vector3d centre(xy(rng), xy(rng), z(rng));
         const double r = radius(rng);
         index.within(centre, r, found);
-        EXPECT_EQ(found, brute_force_within(points, dims, centre, r)) << n << " plots, " << dims;
+        EXPECT_EQ(found, test::brute_force_within(points, dims, centre, r))
+            << n << " plots, " << dims;
       }
     }
   }
