@@ -130,6 +130,11 @@ struct ExtendedSpec {
   /// over that scan is redone with the acceleration state's mean at zero (covariance kept),
   /// so an acceleration estimated before the miss does not carry the coast off the object.
   bool coast_constant_velocity = true;
+  /// A track's plots of a scan update it only when they are likelier its object seen than
+  /// clutter in a scan that missed it (object_plots_log_ratio, with the existence model's
+  /// P_D, gamma and lambda); otherwise the scan is a miss and the track coasts. Two stray
+  /// plots in a coasting track's wide gate otherwise pull its centre and velocity off.
+  bool clutter_scan_test = true;
   bool operator==(const ExtendedSpec&) const = default;
 };
 

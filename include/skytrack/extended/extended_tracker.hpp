@@ -93,6 +93,7 @@ class ExtendedTracker {
   void split_shared(const std::vector<int>& group);
   bool claim_by_confirmed(const std::vector<int>& group);
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
+  bool clutter_likelier(int t);  // the track's plots of this scan likelier clutter
   void two_point_velocity(ExtendedTrack& track) const noexcept;
   void manage(ExtendedScanReport& report);
 
