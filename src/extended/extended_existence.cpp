@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 #include <Eigen/Cholesky>
 
@@ -48,15 +49,12 @@ double existence_miss(double log_odds, int min_plots, const ExistenceSpec& spec)
   return log_odds + std::log1p(-std::min(detected, 1.0 - 1e-12));
 }
 
-double object_plots_log_ratio(std::span<const Eigen::Vector2d> plots, const Eigen::Vector2d& centre,
-                              const Eigen::Matrix2d& centre_cov, const Eigen::Matrix2d& spread,
-                              const ExistenceSpec& spec) noexcept {
+double object_plots_log_density(std::span<const Eigen::Vector2d> plots,
+                                const Eigen::Vector2d& centre, const Eigen::Matrix2d& centre_cov,
+                                const Eigen::Matrix2d& spread) noexcept {
   constexpr double kNone = -std::numeric_limits<double>::infinity();
   const int n = static_cast<int>(plots.size());
-  if (n == 0 || !(spec.clutter_density > 0.0) || !(spec.expected_plots > 0.0) ||
-      !(spec.detection_probability > 0.0 && spec.detection_probability < 1.0)) {
-    return kNone;
-  }
+  if (n == 0) return kNone;
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const Eigen::Vector2d& z : plots) mean += z;
   mean /= static_cast<double>(n);
@@ -73,10 +71,38 @@ double object_plots_log_ratio(std::span<const Eigen::Vector2d> plots, const Eige
   double log_f = -log_2pi - 0.5 * log_det(about) - 0.5 * nu.dot(about.solve(nu));
   double deviations = 0.0;
   for (const Eigen::Vector2d& z : plots) deviations += (z - mean).dot(scatter.solve(z - mean));
-  log_f += -(n - 1) * log_2pi - 0.5 * (n - 1) * log_det(scatter) - std::log(n) - 0.5 * deviations;
+  return log_f - (n - 1) * log_2pi - 0.5 * (n - 1) * log_det(scatter) - std::log(n) -
+         0.5 * deviations;
+}
+
+double object_plots_log_ratio(std::span<const Eigen::Vector2d> plots, const Eigen::Vector2d& centre,
+                              const Eigen::Matrix2d& centre_cov, const Eigen::Matrix2d& spread,
+                              const ExistenceSpec& spec) noexcept {
+  const int n = static_cast<int>(plots.size());
+  if (n == 0 || !(spec.clutter_density > 0.0) || !(spec.expected_plots > 0.0) ||
+      !(spec.detection_probability > 0.0 && spec.detection_probability < 1.0)) {
+    return -std::numeric_limits<double>::infinity();
+  }
   const double p_d = spec.detection_probability;
   return std::log(p_d / (1.0 - p_d)) - spec.expected_plots +
-         n * (std::log(spec.expected_plots) - std::log(spec.clutter_density)) + log_f;
+         n * (std::log(spec.expected_plots) - std::log(spec.clutter_density)) +
+         object_plots_log_density(plots, centre, centre_cov, spread);
+}
+
+double split_log_ratio(std::span<const Eigen::Vector2d> own, std::span<const Eigen::Vector2d> other,
+                       const PlotsModel& own_model, const PlotsModel& other_model,
+                       const ExistenceSpec& spec) {
+  const double p_d = spec.detection_probability;
+  if (own.empty() || other.empty() || !(p_d > 0.0 && p_d < 1.0)) {
+    return -std::numeric_limits<double>::infinity();
+  }
+  std::vector<Eigen::Vector2d> all(own.begin(), own.end());
+  all.insert(all.end(), other.begin(), other.end());
+  auto log_f = [](std::span<const Eigen::Vector2d> plots, const PlotsModel& m) {
+    return object_plots_log_density(plots, m.centre, m.centre_cov, m.spread);
+  };
+  return std::log(p_d / (1.0 - p_d)) - spec.expected_plots + log_f(own, own_model) +
+         log_f(other, other_model) - log_f(all, other_model);
 }
 
 double existence_probability(double log_odds) noexcept {

@@ -182,6 +182,7 @@ extended:
   delete_misses: 5
   coast_constant_velocity: false
   clutter_scan_test: false
+  one_object_split_test: false
   existence: {enabled: false, clutter_density: 2.0e-7}
 )",
                                      "e.yaml");
@@ -192,6 +193,7 @@ extended:
   EXPECT_EQ(profile->extended.delete_misses, 5);
   EXPECT_FALSE(profile->extended.coast_constant_velocity);
   EXPECT_FALSE(profile->extended.clutter_scan_test);
+  EXPECT_FALSE(profile->extended.one_object_split_test);
   EXPECT_FALSE(profile->extended.existence.enabled);
   EXPECT_DOUBLE_EQ(profile->extended.existence.clutter_density, 2.0e-7);
   const auto typo = parse_profile(

@@ -44,6 +44,25 @@ double existence_miss(double log_odds, int min_plots, const ExistenceSpec& spec)
 double object_plots_log_ratio(std::span<const Eigen::Vector2d> plots, const Eigen::Vector2d& centre,
                               const Eigen::Matrix2d& centre_cov, const Eigen::Matrix2d& spread,
                               const ExistenceSpec& spec) noexcept;
+/// ln f of object_plots_log_ratio alone (the plots' joint density under one object).
+double object_plots_log_density(std::span<const Eigen::Vector2d> plots,
+                                const Eigen::Vector2d& centre, const Eigen::Matrix2d& centre_cov,
+                                const Eigen::Matrix2d& spread) noexcept;
+/// A track's model of its object's plots in a scan: centre N(centre, centre_cov), each plot
+/// scattered about it by `spread` (X/4 + R).
+struct PlotsModel {
+  Eigen::Vector2d centre;
+  Eigen::Matrix2d centre_cov, spread;
+};
+/// ln of the likelihood ratio of a split of one partition between two tracks (`own` plots to
+/// the first, `other` to the second, both objects seen) against the first's object missed and
+/// the second's giving all of them:
+///   ln [P_D / (1 - P_D) e^{-gamma} f_1(own) f_2(other) / f_2(own + other)]
+/// (object_plots_log_density; the counts' gamma^n cancel). -infinity when either share is
+/// empty.
+double split_log_ratio(std::span<const Eigen::Vector2d> own, std::span<const Eigen::Vector2d> other,
+                       const PlotsModel& own_model, const PlotsModel& other_model,
+                       const ExistenceSpec& spec);
 /// r from log-odds.
 double existence_probability(double log_odds) noexcept;
 
