@@ -205,6 +205,8 @@ void read_extended(YamlSection s, TrackingProfile& p) {
   s.number("initial_accel_sigma", e.initial_accel_sigma, Range{1e-3, kMaxAccel});
   s.number("initial_extent_axis", e.initial_extent_axis, Range{1e-3, 1e5});
   s.boolean("coast_constant_velocity", e.coast_constant_velocity);
+  s.boolean("clutter_scan_test", e.clutter_scan_test);
+  s.boolean("one_object_split_test", e.one_object_split_test);
   s.finish();
 }
 

@@ -9,6 +9,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include "skytrack/extended/extended_existence.hpp"
 #include "skytrack/extended/extended_tracker.hpp"
 
 namespace skytrack::extended {
@@ -132,6 +133,7 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
       split_cov_[g] = prior - K * prior;
     }
   }
+  if (k == 2 && spec_.one_object_split_test) one_object_only(group);
   for (std::size_t p = 0; p < group.size(); ++p) {
     if (split_owner_[p] < 0) continue;
     const int t = gated_[split_owner_[p]].track;
@@ -140,6 +142,33 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
       track_plots_[t].push_back(i);
     }
   }
+}
+
+void ExtendedTracker::one_object_only(const std::vector<int>& group) {
+  // Two tracks split the partition, but one object may be all of it (the other missed, as a
+  // crossing's objects part): a split less likely than one track's object missed and the
+  // other's giving every plot (split_log_ratio) gives them all to that other track.
+  std::vector<Eigen::Vector2d> share[2];
+  Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+  for (std::size_t p = 0; p < group.size(); ++p) {
+    if (split_owner_[p] >= 0) share[split_owner_[p]].push_back(positions_[group[p]]);
+    noise += noises_[group[p]];
+  }
+  if (share[0].empty() || share[1].empty()) return;
+  noise /= static_cast<double>(group.size());
+  const PosMat H = position_matrix();
+  PlotsModel model[2];
+  for (int g = 0; g < 2; ++g) {
+    const int t = gated_[g].track;
+    model[g] = {tracks_[t].position(), H * tracks_[t].object.P * H.transpose(),
+                kScatter * association_extents_[t] + noise};
+  }
+  const ExistenceSpec& e = spec_.existence;
+  const double without[2] = {split_log_ratio(share[0], share[1], model[0], model[1], e),
+                             split_log_ratio(share[1], share[0], model[1], model[0], e)};
+  const int absent = without[0] <= without[1] ? 0 : 1;
+  if (!(without[absent] < 0.0)) return;
+  for (int& owner : split_owner_) owner = 1 - absent;
 }
 
 bool ExtendedTracker::claim_by_confirmed(const std::vector<int>& group) {

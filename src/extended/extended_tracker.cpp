@@ -188,7 +188,8 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     const std::vector<int>& plots = track_plots_[t];
     // Fewer plots than start a track are taken as clutter in a scan the object was missed:
     // one stray plot would drag the centre, velocity and extent off the object.
-    if (static_cast<int>(plots.size()) < std::max(1, spec_.min_partition_plots)) {
+    if (static_cast<int>(plots.size()) < std::max(1, spec_.min_partition_plots) ||
+        clutter_likelier(t)) {
       // Unseen: coast at constant velocity (the acceleration estimated before is no evidence
       // that the object keeps accelerating; extrapolated it carries the coast off).
       if (spec_.coast_constant_velocity && scan_dt_ > 0.0) {
@@ -215,6 +216,21 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     ++report.updated;
   }
   for (const std::vector<int>* group : unassigned) initiate(*group, report);
+}
+
+bool ExtendedTracker::clutter_likelier(int t) {
+  // The plots' joint density under the track (centre N(c, HPH'), each plot scattered by
+  // X/4 + R) against clutter of density lambda in a scan that missed the object.
+  if (!spec_.clutter_scan_test) return false;
+  plot_buffer_.clear();
+  Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+  for (int i : track_plots_[t]) plot_buffer_.push_back(positions_[i]), noise += noises_[i];
+  noise /= static_cast<double>(track_plots_[t].size());
+  const PosMat H = position_matrix();
+  const ExtendedTrack& track = tracks_[t];
+  const Eigen::Matrix2d spread = kScatter * association_extents_[t] + noise;
+  return object_plots_log_ratio(plot_buffer_, track.position(), H * track.object.P * H.transpose(),
+                                spread, spec_.existence) < 0.0;
 }
 
 void ExtendedTracker::two_point_velocity(ExtendedTrack& track) const noexcept {

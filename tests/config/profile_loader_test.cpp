@@ -181,6 +181,8 @@ extended:
   random_matrix: {initial_dof: 6.0}
   delete_misses: 5
   coast_constant_velocity: false
+  clutter_scan_test: false
+  one_object_split_test: false
   existence: {enabled: false, clutter_density: 2.0e-7}
 )",
                                      "e.yaml");
@@ -190,6 +192,8 @@ extended:
   EXPECT_DOUBLE_EQ(profile->extended.random_matrix.initial_dof, 6.0);
   EXPECT_EQ(profile->extended.delete_misses, 5);
   EXPECT_FALSE(profile->extended.coast_constant_velocity);
+  EXPECT_FALSE(profile->extended.clutter_scan_test);
+  EXPECT_FALSE(profile->extended.one_object_split_test);
   EXPECT_FALSE(profile->extended.existence.enabled);
   EXPECT_DOUBLE_EQ(profile->extended.existence.clutter_density, 2.0e-7);
   const auto typo = parse_profile(

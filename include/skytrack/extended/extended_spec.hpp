@@ -130,6 +130,16 @@ struct ExtendedSpec {
   /// over that scan is redone with the acceleration state's mean at zero (covariance kept),
   /// so an acceleration estimated before the miss does not carry the coast off the object.
   bool coast_constant_velocity = true;
+  /// A track's plots of a scan update it only when they are likelier its object seen than
+  /// clutter in a scan that missed it (object_plots_log_ratio, with the existence model's
+  /// P_D, gamma and lambda); otherwise the scan is a miss and the track coasts. Two stray
+  /// plots in a coasting track's wide gate otherwise pull its centre and velocity off.
+  bool clutter_scan_test = true;
+  /// Two tracks' split of a shared partition is kept only when likelier than all its plots
+  /// being one of the two objects with the other missed (P_D, gamma of the existence
+  /// model; ExtendedTracker::one_object_only): as a crossing's objects part and one is
+  /// missed, its coasting track took some of the other object's plots and turned onto it.
+  bool one_object_split_test = true;
   bool operator==(const ExtendedSpec&) const = default;
 };
 

@@ -91,8 +91,10 @@ class ExtendedTracker {
   Eigen::Matrix2d association_extent(const ExtendedTrack& track) const noexcept;
   bool crossing_unresolved() const noexcept;
   void split_shared(const std::vector<int>& group);
+  void one_object_only(const std::vector<int>& group);  // a split where one object is all
   bool claim_by_confirmed(const std::vector<int>& group);
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
+  bool clutter_likelier(int t);  // the track's plots of this scan likelier clutter
   void two_point_velocity(ExtendedTrack& track) const noexcept;
   void manage(ExtendedScanReport& report);
 
