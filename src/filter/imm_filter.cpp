@@ -229,7 +229,10 @@ PlotHypothesis ImmFilter::hypothesise(const ImmEstimate& predicted,
 
 double ImmFilter::min_nis(const ImmEstimate& predicted, const PlotMeasurement& measurement,
                           HypothesisShapes& shapes) const noexcept {
-  if (measurement_.update == config::MeasurementUpdate::kUnscented) return -kInf;
+  if (measurement_.update == config::MeasurementUpdate::kUnscented) {
+    const PlotHypothesis whole = hypothesise(predicted, measurement);
+    return whole.usable ? whole.min_nis : kInf;
+  }
   shape(predicted, measurement, shapes);
   double least = kInf;
   for (const InnovationShape& mode : shapes.modes_) {

@@ -18,15 +18,6 @@ namespace {
 
 using namespace tracking_detail;
 
-/// Two plots' models give one innovation covariance against one prediction: the same form,
-/// sensor geometry and noise.
-bool same_noise(const MeasurementModel& a, const MeasurementModel& b) {
-  return a.kind == b.kind && a.state_dims == b.state_dims &&
-         a.position_components == b.position_components && a.has_range_rate == b.has_range_rate &&
-         a.platform == b.platform && a.enu_to_body == b.enu_to_body &&
-         a.sigma.size() == b.sigma.size() && a.sigma == b.sigma;
-}
-
 /// The manoeuvre gate's filter: the profile's manoeuvre models with their white acceleration
 /// raised to branching.manoeuvre_accel_sigma, in the main filter's state layout. Each gate
 /// starts the models from the track's combined estimate, so no mode switching is needed.
@@ -217,7 +208,7 @@ void BranchLayer::narrow(int t, ImmEstimate& predicted, std::span<const int> nei
   for (std::size_t k = 0; held && clutter_area == 0 && k < neighbours.size(); ++k) {
     const int j = neighbours[k];
     const PlotMeasurement& plot = pre().plots()[j];
-    if (model == nullptr || !same_noise(*model, plot.model)) {
+    if (model == nullptr || !same_innovation_shape(*model, plot.model)) {
       in = innovate(held->modes.front(), filter().layout(), plot, profile_.measurement);
       model = &plot.model;
     }

@@ -47,15 +47,10 @@ int BranchLayer::lost_father_of(const PlotMeasurement& plot, double* nis) {
           manoeuvre_prediction(previous_[static_cast<std::size_t>(lost.track)], plot.time);
       lost.shapes.clear();
     }
-    // The smallest NIS over the manoeuvre models (+inf when none can take the plot); the
-    // unscented update has no shortcut (-inf) and weighs the whole hypothesis.
-    double nis = manoeuvre_.min_nis(lost.predicted, plot, lost.shapes);
-    if (nis == -std::numeric_limits<double>::infinity()) {
-      const PlotHypothesis h = manoeuvre_.hypothesise(lost.predicted, plot);
-      nis = h.usable ? h.min_nis : std::numeric_limits<double>::infinity();
-    }
-    if (std::isfinite(nis) && nis <= best_nis) {
-      best_nis = nis;
+    // The smallest NIS over the manoeuvre models (+inf when none can take the plot).
+    const double least = manoeuvre_.min_nis(lost.predicted, plot, lost.shapes);
+    if (std::isfinite(least) && least <= best_nis) {
+      best_nis = least;
       best = lost.track;
     }
   }

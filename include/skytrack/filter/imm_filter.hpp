@@ -121,8 +121,8 @@ class ImmFilter {
                              HypothesisShapes& shapes) const noexcept;
   /// The smallest NIS of a plot over the modes whose innovation is ok (+infinity when none
   /// is), as hypothesise() gives it, from the kept shapes without the rest of the
-  /// hypothesis: the cheap test of whether a plot lies in any mode's gate. The unscented
-  /// update has no cheap test: -infinity (test the whole hypothesis).
+  /// hypothesis: the cheap test of whether a plot lies in any mode's gate (the unscented
+  /// update has no shortcut: it innovates the plot whole).
   double min_nis(const ImmEstimate& predicted, const PlotMeasurement& measurement,
                  HypothesisShapes& shapes) const noexcept;
 
