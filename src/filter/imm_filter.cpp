@@ -137,26 +137,41 @@ ImmEstimate ImmFilter::initial(const Gaussian& state, const Eigen::VectorXd& pro
   const int n = mode_count();
   const bool usable = probabilities.size() == n && probabilities.allFinite() &&
                       (probabilities.array() >= 0.0).all() && probabilities.sum() > 0.0;
-  out.probabilities = usable ? Eigen::VectorXd(probabilities / probabilities.sum())
-                             : Eigen::VectorXd::Constant(n, 1.0 / n);
+  out.probabilities = usable ? ModeProbabilities(probabilities / probabilities.sum())
+                             : ModeProbabilities::Constant(n, 1.0 / n);
   return out;
 }
 
 ImmEstimate ImmFilter::predict(const ImmEstimate& posterior, double time) const noexcept {
-  return predict_modes(posterior, time, -1);
+  ImmEstimate out;
+  predict_modes(posterior, time, -1, out);
+  return out;
+}
+
+void ImmFilter::predict(const ImmEstimate& posterior, double time,
+                        ImmEstimate& out) const noexcept {
+  predict_modes(posterior, time, -1, out);
 }
 
 ImmEstimate ImmFilter::predict_certain(const ImmEstimate& posterior, int mode,
                                        double time) const noexcept {
-  return predict_modes(posterior, time, mode);
+  ImmEstimate out;
+  predict_modes(posterior, time, mode, out);
+  return out;
 }
 
-ImmEstimate ImmFilter::predict_modes(const ImmEstimate& posterior, double time,
-                                     int certain) const noexcept {
+void ImmFilter::predict_certain(const ImmEstimate& posterior, int mode, double time,
+                                ImmEstimate& out) const noexcept {
+  predict_modes(posterior, time, mode, out);
+}
+
+void ImmFilter::predict_modes(const ImmEstimate& posterior, double time, int certain,
+                              ImmEstimate& out) const noexcept {
   const int n = mode_count();
   assert(static_cast<int>(posterior.modes.size()) == n && posterior.probabilities.size() == n);
-  ImmEstimate out;
+  assert(&out != &posterior);
   out.time = time;
+  out.failed_modes = 0;
   out.modes.resize(models_.size());
   const double dt = time - posterior.time;
   // The Markov matrix over dt (transition_over); within one interval, the common case, its
@@ -169,8 +184,8 @@ ImmEstimate ImmFilter::predict_modes(const ImmEstimate& posterior, double time,
     if (steps == 1.0) return transition_(i, j);
     return (i == j ? 1.0 - steps : 0.0) + steps * transition_(i, j);
   };
-  Eigen::VectorXd& c = out.probabilities;
-  c = Eigen::VectorXd::Zero(n);
+  ModeProbabilities& c = out.probabilities;
+  c = ModeProbabilities::Zero(n);
   if (certain >= 0) {
     // mu is 1 at `certain`: c_j = p_certain,j, and every mode's mixed estimate is the certain
     // mode's own (its mixing weight is 1, the others' 0), so one prediction serves them all.
@@ -197,7 +212,6 @@ ImmEstimate ImmFilter::predict_modes(const ImmEstimate& posterior, double time,
   }
   const double sum = c.sum();
   if (sum > 0.0 && std::isfinite(sum)) c /= sum;
-  return out;
 }
 
 PlotHypothesis ImmFilter::hypothesise(const ImmEstimate& predicted,
@@ -288,6 +302,17 @@ ImmEstimate ImmFilter::update(const ImmEstimate& predicted,
                               std::span<const double> beta_plots, double beta_miss,
                               double detection_probability, double gate_probability,
                               double clutter_density) const noexcept {
+  ImmEstimate out;
+  update(predicted, hypotheses, beta_plots, beta_miss, detection_probability, gate_probability,
+         clutter_density, out);
+  return out;
+}
+
+void ImmFilter::update(const ImmEstimate& predicted, std::span<const PlotHypothesis> hypotheses,
+                       std::span<const double> beta_plots, double beta_miss,
+                       double detection_probability, double gate_probability,
+                       double clutter_density, ImmEstimate& out) const noexcept {
+  assert(&out != &predicted);
   const int n = mode_count();
   const std::size_t count = std::min(hypotheses.size(), beta_plots.size());
   const auto innovation_at = [&](std::size_t i, int j) -> const Innovation& {
@@ -298,8 +323,8 @@ ImmEstimate ImmFilter::update(const ImmEstimate& predicted,
   const double beta0 = weights.miss;
   const auto beta = [&](std::size_t i) { return weights(i); };
 
-  ImmEstimate out;
   out.time = predicted.time;
+  out.failed_modes = 0;
   out.modes.resize(models_.size());
   out.probabilities.resize(n);
   for (int j = 0; j < n; ++j) {
@@ -332,7 +357,6 @@ ImmEstimate ImmFilter::update(const ImmEstimate& predicted,
   } else {
     out.probabilities = predicted.probabilities;
   }
-  return out;
 }
 
 Gaussian ImmFilter::combine(const ImmEstimate& estimate) const noexcept {

@@ -192,13 +192,13 @@ bool BranchLayer::at_mid_batch(int t, bool covered, const Gaussian& mid, double 
 void BranchLayer::narrow(int t, ImmEstimate& predicted, std::span<const int> neighbours,
                          std::uint8_t& clutter_area) {
   const PointTrack& track = store()[static_cast<std::size_t>(t)];
-  const std::optional<ImmEstimate> narrowed = last_motion(track, predicted.time);
+  const bool narrowed = last_motion(track, predicted.time, false, narrowed_);
   // branching.last_motion_false_plots: the clutter is weighed in the last motion's gate,
   // whether or not the father gates on it in this look.
   const bool weighs_clutter =
       holds_last_motion() && profile_.point.branching.last_motion_false_plots > 0.0;
-  const std::optional<ImmEstimate> held =
-      narrowed || !weighs_clutter ? narrowed : last_motion(track, predicted.time, true);
+  const bool held =
+      narrowed || (weighs_clutter && last_motion(track, predicted.time, true, narrowed_));
   // In a clutter area: a plot round it in dense clutter (without last_motion_false_plots
   // every track is, from the start of the look). The gate's size is the innovation
   // covariance's, which depends on a plot only through its measurement model: one
@@ -209,7 +209,7 @@ void BranchLayer::narrow(int t, ImmEstimate& predicted, std::span<const int> nei
     const int j = neighbours[k];
     const PlotMeasurement& plot = pre().plots()[j];
     if (model == nullptr || !same_innovation_shape(*model, plot.model)) {
-      in = innovate(held->modes.front(), filter().layout(), plot, profile_.measurement);
+      in = innovate(narrowed_.modes.front(), filter().layout(), plot, profile_.measurement);
       model = &plot.model;
     }
     if (in->ok && in_dense_clutter(*in, j)) clutter_area = 1;
@@ -219,7 +219,7 @@ void BranchLayer::narrow(int t, ImmEstimate& predicted, std::span<const int> nei
     // gates, weighs and is updated on its last motion alone. The IMM's turn modes spread the
     // likelihood over the false plots (exp. 2, seeds 1-100: the number survives 52 -> 70 %)
     // and turn the father onto them; a turn is its sons' to follow (rule 6).
-    predicted = *narrowed;
+    predicted = narrowed_;
   }
 }
 

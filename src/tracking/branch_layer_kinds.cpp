@@ -87,8 +87,10 @@ void BranchLayer::associate(const PlotScan& scan, ScanReport& report, TrackFrame
   pending_splits_.clear();
   doubtful_.clear();
   replaced_now_.clear();
-  if (profile_.point.branching.coast_sons > 0)
-    before_update_.assign(store().size(), BeforeUpdate{});
+  if (profile_.point.branching.coast_sons > 0) {
+    for (BeforeUpdate& before : before_update_) before.valid = false;
+    before_update_.resize(store().size());
+  }
   solve_kind(PairKind::kFatherNonManoeuvre);
   split_undecided_fathers();
   solve_kind(PairKind::kSonNonManoeuvre);
@@ -144,8 +146,11 @@ void BranchLayer::solve_kind(PairKind kind) {
         std::optional<ImmEstimate> last_detected;
         if (split && holds_last_motion()) last_detected = store()[t].last_detected;
         if (kind == PairKind::kFatherNonManoeuvre && profile_.point.branching.coast_sons > 0) {
-          before_update_[static_cast<std::size_t>(t)] = {
-              store()[t].last_detected, store()[t].life.support, store()[t].life.detectable};
+          BeforeUpdate& before = before_update_[static_cast<std::size_t>(t)];
+          before.motion = store()[t].last_detected;  // assigned in place: storage reused
+          before.support = store()[t].life.support;
+          before.detectable = store()[t].life.detectable;
+          before.valid = true;
         }
         if (kind == PairKind::kFatherNonManoeuvre) update_father(t, mine, beta, miss);
         // A doomed father takes no non-manoeuvre pair but may start sons, so that a

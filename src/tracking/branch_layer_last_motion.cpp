@@ -38,21 +38,29 @@ bool BranchLayer::in_dense_clutter(const Innovation& last_motion, int plot) cons
 
 std::optional<ImmEstimate> BranchLayer::last_motion(const PointTrack& track, double time,
                                                     bool missing_now) const {
+  ImmEstimate out;
+  if (!last_motion(track, time, missing_now, out)) return std::nullopt;
+  return out;
+}
+
+bool BranchLayer::last_motion(const PointTrack& track, double time, bool missing_now,
+                              ImmEstimate& out) const {
   // A coast son always holds its father's last motion (branching.coast_sons).
   const bool firm_father =
       track.branch == BranchType::kFather && is_reported_as_firm(track.life.status);
   if (!holds_last_motion() || !track.last_detected || !(firm_father || track.coast_son()) ||
       (!track.coast_son() && track.life.consecutive_misses < 1 && !missing_now &&
        profile_.point.branching.non_manoeuvre_gate != config::NonManoeuvreGate::kLastMotion)) {
-    return std::nullopt;
+    return false;
   }
   // The likeliest mode at the last detection, predicted alone: IMM mixing would blend in the
   // other modes' diverging predictions.
   const ImmEstimate& last = *track.last_detected;
   Eigen::Index kept = 0;
   last.probabilities.maxCoeff(&kept);
-  return (hold_ ? *hold_ : filter())
-      .predict_certain(last, static_cast<int>(kept), std::max(time, last.time));
+  (hold_ ? *hold_ : filter())
+      .predict_certain(last, static_cast<int>(kept), std::max(time, last.time), out);
+  return true;
 }
 
 }  // namespace skytrack

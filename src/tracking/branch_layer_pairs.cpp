@@ -181,10 +181,12 @@ void BranchLayer::confirm_branch_pairs(ScanReport& report, TrackFrame& frame) {
         look_->used_by_branch[pair.plot] = 1;
         changes_.clear();
         tree_.release_branches(father.id, changes_);
-        apply(changes_,
-              name(BranchType::kFather, father.id) + " took plot " +
-                  std::to_string(pre().plots()[pair.plot].plot_id) + " (rule 5)",
-              report);
+        if (!changes_.empty()) {  // the common firm father has no branch: no reason to word
+          apply(changes_,
+                name(BranchType::kFather, father.id) + " took plot " +
+                    std::to_string(pre().plots()[pair.plot].plot_id) + " (rule 5)",
+                report);
+        }
         note_doubtful_update(pair);
         break;
       }
@@ -222,7 +224,7 @@ void BranchLayer::start_coast_sons(ScanReport& report, TrackFrame& frame) {
     const PointTrack& father = store()[d.track];
     const BeforeUpdate& before = before_update_[static_cast<std::size_t>(d.track)];
     if (father.branch != BranchType::kFather || father.replaced || father.doomed() ||
-        father.life.status == TrackStatus::kDeleted || !before.motion) {
+        father.life.status == TrackStatus::kDeleted || !before.valid || !before.motion) {
       continue;
     }
     const std::int64_t father_id = father.id;

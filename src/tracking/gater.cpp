@@ -62,8 +62,10 @@ void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrac
       }
     }
     const double mid_time = std::max(batch_mid, estimate.time);
-    ImmEstimate mid_estimate = filter.predict(estimate, mid_time);
-    const Gaussian mid = filter.combine(mid_estimate);
+    // Predicted in place: predicted_[t] keeps its storage from look to look.
+    ImmEstimate& predicted = predicted_[t];
+    filter.predict(estimate, mid_time, predicted);
+    const Gaussian mid = filter.combine(predicted);
     const Eigen::Vector3d centre = position_of(mid.mean, dims_);
     // A sector batch looks at a track whose predicted position lies in the sector; one whose
     // search region only reaches into it may take a plot from it but is not aged by it.
@@ -76,31 +78,30 @@ void Gater::gate(const PlotScan& scan, Preprocessing& pre, std::vector<PointTrac
     // half the batch's time span. The exact gate test is per plot, in measurement space.
     const double radius = search_radius(mid, centre, widest, scan);
     if (!covered_[t] && !covers_region(scan, centre, radius)) {
-      predicted_[t] = estimate;
+      predicted = estimate;
       continue;
     }
     pre.index().within(centre, radius, neighbours_);
     if (neighbours_.empty()) {
-      predicted_[t] = estimate;
-      coasted_[t] = std::move(mid_estimate);
+      coasted_[t] = predicted;
+      predicted = estimate;
       continue;
     }
     // The track is updated at the time of its nearest candidate plot (a snapshot look's
     // plots share the batch's time: its prediction to the middle is that one).
     const double update_time = std::max(nearest_time(pre, neighbours_, centre), estimate.time);
-    predicted_[t] =
-        update_time == mid_time ? std::move(mid_estimate) : filter.predict(estimate, update_time);
+    if (update_time != mid_time) filter.predict(estimate, update_time, predicted);
     if (!non_manoeuvre) continue;
-    hooks.narrow(static_cast<int>(t), predicted_[t], neighbours_, clutter_area_[t]);
+    hooks.narrow(static_cast<int>(t), predicted, neighbours_, clutter_area_[t]);
     shapes_.clear();
     for (const int j : neighbours_) {
       // A plot inside any mode's gate (the union of the modes' gates), or the gate of the
       // prediction the hook narrowed it to, is a candidate.
-      if (filter.min_nis(predicted_[t], pre.plots()[j], shapes_) >
+      if (filter.min_nis(predicted, pre.plots()[j], shapes_) >
           gate_threshold_[pre.plots()[j].model.size()]) {
         continue;
       }
-      PlotHypothesis hypothesis = filter.hypothesise(predicted_[t], pre.plots()[j], shapes_);
+      PlotHypothesis hypothesis = filter.hypothesise(predicted, pre.plots()[j], shapes_);
       if (!hypothesis.usable || hypothesis.min_nis > gate_threshold_[pre.plots()[j].model.size()]) {
         continue;
       }

@@ -47,9 +47,10 @@ PlotRatios ImmPdaUpdater::update(PointLook& look, int t, std::vector<Candidate>&
     kept += beta_plots[k];
   }
   for (double& b : kept_beta_) b /= kept;
-  track.estimate = look.counted(look.filter.update(
-      look.gater.predicted()[static_cast<std::size_t>(t)], hypotheses_, kept_beta_,
-      beta_miss / kept, pd, look.profile.association.gate_probability, density));
+  look.filter.update(look.gater.predicted()[static_cast<std::size_t>(t)], hypotheses_, kept_beta_,
+                     beta_miss / kept, pd, look.profile.association.gate_probability, density,
+                     track.estimate);
+  look.count(track.estimate);
   return ratios;
 }
 

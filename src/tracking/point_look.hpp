@@ -47,9 +47,10 @@ struct PointLook {
   }
   /// An update, its failed modes (which kept their prediction) counted for the report.
   ImmEstimate counted(ImmEstimate update) {
-    numeric_failures += update.numeric_failure() ? 1 : 0;
+    count(update);
     return update;
   }
+  void count(const ImmEstimate& update) { numeric_failures += update.numeric_failure() ? 1 : 0; }
 };
 
 /// The start of a new track's estimate (two-point, then IMM updates with the chain's further

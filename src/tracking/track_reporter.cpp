@@ -21,17 +21,21 @@ void TrackReporter::report(const std::vector<PointTrack>& tracks, const ImmFilte
   const int dims = filter.layout().dims;
   const int n = 2 * dims;
   std::size_t reported = 0;
+  ImmEstimate scratch;
   for (const PointTrack& track : tracks) {
     if (track.branch != BranchType::kFather) {  // sons and grandsons are internal
       if (track.life.status != TrackStatus::kDeleted) ++report.point.branches;
       continue;
     }
     if (track.replaced) continue;  // its number lives on in the branch that replaced it
-    const auto at = [&](const ImmEstimate& e) {
-      return e.time < time ? filter.predict(e, time) : e;
+    // The estimate at the frame's time: the track's own, or its prediction kept in scratch.
+    const auto at = [&](const ImmEstimate& e) -> const ImmEstimate& {
+      if (e.time >= time) return e;
+      scratch = filter.predict(e, time);
+      return scratch;
     };
-    ImmEstimate at_time = at(track.estimate);
-    Gaussian g = filter.combine(at_time);
+    const ImmEstimate* at_time = &at(track.estimate);
+    Gaussian g = filter.combine(*at_time);
     TrackStatus status = track.life.status;
     // A father that took no plot while a branch of its did (its sons decide) is reported,
     // coasting, at that branch's estimate, with a covariance that still covers its own
@@ -45,8 +49,8 @@ void TrackReporter::report(const std::vector<PointTrack>& tracks, const ImmFilte
     }
     if (branch != nullptr) {
       const Eigen::VectorXd father_mean = g.mean;
-      at_time = at(branch->estimate);
-      g = filter.combine(at_time);
+      at_time = &at(branch->estimate);
+      g = filter.combine(*at_time);
       const Eigen::VectorXd gap = father_mean - g.mean;
       g.covariance += gap * gap.transpose();
       status = TrackStatus::kCoasting;
@@ -71,7 +75,7 @@ void TrackReporter::report(const std::vector<PointTrack>& tracks, const ImmFilte
     }
     const auto& names = filter.names();
     for (std::size_t m = 0; m < names.size(); ++m) {
-      out.modes.emplace_back(names[m], at_time.probabilities[static_cast<Eigen::Index>(m)]);
+      out.modes.emplace_back(names[m], at_time->probabilities[static_cast<Eigen::Index>(m)]);
     }
     out.quality = track.quality;
     switch (status) {

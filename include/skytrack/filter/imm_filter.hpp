@@ -46,11 +46,14 @@ namespace skytrack {
 
 inline constexpr int kMaxImmModes = 32;
 
+/// Mode probabilities, held inline (a track's estimate is copied every look: no allocation).
+using ModeProbabilities = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxImmModes, 1>;
+
 struct ImmEstimate {
-  std::vector<Gaussian> modes;     // one per mode, all in the filter's StateLayout
-  Eigen::VectorXd probabilities;   // mu_j (posterior) or c_j (after predict)
-  double time = 0.0;               // [s]
-  std::uint32_t failed_modes = 0;  // bit j: mode j kept its prediction (numeric failure)
+  std::vector<Gaussian> modes;      // one per mode, all in the filter's StateLayout
+  ModeProbabilities probabilities;  // mu_j (posterior) or c_j (after predict)
+  double time = 0.0;                // [s]
+  std::uint32_t failed_modes = 0;   // bit j: mode j kept its prediction (numeric failure)
 
   bool numeric_failure() const noexcept { return failed_modes != 0; }
 };
@@ -106,11 +109,15 @@ class ImmFilter {
   /// Mixing (eq. 1-2) and per-mode prediction to `time`; the result's probabilities are the
   /// predicted c_j. The Markov matrix is the one for the interval (transition_over).
   ImmEstimate predict(const ImmEstimate& posterior, double time) const noexcept;
+  /// The same, written over `out` (another object than `posterior`), whose storage is reused.
+  void predict(const ImmEstimate& posterior, double time, ImmEstimate& out) const noexcept;
 
   /// The prediction of `posterior` taken as certain of `mode` (mu one there, zero elsewhere):
   /// that mode's estimate along its own model, set as every mode's estimate (one prediction,
   /// not one per mode), with the mode priors such a certainty gives.
   ImmEstimate predict_certain(const ImmEstimate& posterior, int mode, double time) const noexcept;
+  void predict_certain(const ImmEstimate& posterior, int mode, double time,
+                       ImmEstimate& out) const noexcept;
 
   /// Innovations of one plot against every mode of a prediction.
   PlotHypothesis hypothesise(const ImmEstimate& predicted,
@@ -133,6 +140,10 @@ class ImmFilter {
                      std::span<const double> beta_plots, double beta_miss,
                      double detection_probability, double gate_probability,
                      double clutter_density) const noexcept;
+  /// The same, written over `out` (another object than `predicted`), whose storage is reused.
+  void update(const ImmEstimate& predicted, std::span<const PlotHypothesis> hypotheses,
+              std::span<const double> beta_plots, double beta_miss, double detection_probability,
+              double gate_probability, double clutter_density, ImmEstimate& out) const noexcept;
 
   /// The Markov matrix over `dt` seconds: P^k (I + f (P - I)) with k + f = dt / interval
   /// (k whole), a stochastic matrix equal to P at dt = interval and to I at dt = 0; P itself
@@ -151,7 +162,8 @@ class ImmFilter {
   int mode_count() const { return static_cast<int>(models_.size()); }
 
  private:
-  ImmEstimate predict_modes(const ImmEstimate& posterior, double time, int certain) const noexcept;
+  void predict_modes(const ImmEstimate& posterior, double time, int certain,
+                     ImmEstimate& out) const noexcept;
   /// The kept shapes, remade when `measurement` has another model than the last plot's.
   void shape(const ImmEstimate& predicted, const PlotMeasurement& measurement,
              HypothesisShapes& shapes) const noexcept;

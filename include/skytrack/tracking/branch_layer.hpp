@@ -183,6 +183,8 @@ class BranchLayer final : public BranchHooks {
   /// Empty otherwise.
   std::optional<ImmEstimate> last_motion(const PointTrack& track, double time,
                                          bool missing_now = false) const;
+  /// The same written over `out` (its storage reused); false, `out` untouched, when empty.
+  bool last_motion(const PointTrack& track, double time, bool missing_now, ImmEstimate& out) const;
 
   config::TrackingProfile profile_;
   config::TrackLifeSpec branch_life_;  // sons and grandsons: M-of-N confirmation
@@ -196,6 +198,7 @@ class BranchLayer final : public BranchHooks {
   // Per-look workspaces (reused).
   std::vector<int> suspended_at_gate_;      // fathers suspended on their prediction
   std::vector<ImmEstimate> previous_;       // per track, before this batch
+  ImmEstimate narrowed_;                    // narrow()'s last motion of one track
   std::vector<std::uint8_t> has_previous_;  // previous_ holds this batch's prior
   struct LostFather {  // a suspended father and its manoeuvre gate's reach this batch
     int track = 0;
@@ -224,6 +227,7 @@ class BranchLayer final : public BranchHooks {
     std::optional<ImmEstimate> motion;  // last_detected
     double support = 0.0;               // life.support
     double detectable = 1.0;            // life.detectable
+    bool valid = false;                 // set in this look (the slots keep their storage)
   };
   std::vector<BeforeUpdate> before_update_;  // per track (coast sons)
   struct DoubtfulUpdate {  // a father's non-manoeuvre pair whose plot may be a false alarm
