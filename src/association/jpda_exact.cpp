@@ -41,6 +41,7 @@ JpdaExactOutcome JpdaExact::compute(const Eigen::Ref<const Eigen::MatrixXd>& wei
                                     Eigen::Ref<Eigen::MatrixXd> beta) noexcept {
   tracks_ = static_cast<int>(weights.rows());
   columns_ = static_cast<int>(weights.cols());
+  if (tracks_ == 1) return one_track(weights, max_states, beta);
   JpdaExactOutcome outcome;
   classify_plots(weights);
   order_tracks();
@@ -62,6 +63,33 @@ JpdaExactOutcome JpdaExact::compute(const Eigen::Ref<const Eigen::MatrixXd>& wei
   outcome.events = any ? events_[at(terminal)] : 0;
   outcome.total_weight = g_.empty() ? 0.0 : g_[0];
   if (outcome.total_weight > 0.0) marginals(weights, outcome.total_weight, beta);
+  return outcome;
+}
+
+JpdaExactOutcome JpdaExact::one_track(const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                                      std::int64_t max_states,
+                                      Eigen::Ref<Eigen::MatrixXd> beta) noexcept {
+  JpdaExactOutcome outcome;
+  double stay = weights(0, 0);
+  std::int64_t events = stay > 0.0 ? 1 : 0;
+  for (int c = 1; c < columns_; ++c) {
+    if (weights(0, c) > 0.0) {
+      stay += weights(0, c);
+      ++events;
+    }
+  }
+  // The root and, when any event has weight, the terminal state.
+  outcome.states = stay > 0.0 ? 2 : 1;
+  if (outcome.states > max_states) return outcome;
+  outcome.completed = true;
+  if (!(stay > 0.0)) return outcome;
+  outcome.events = events;
+  outcome.total_weight = stay;
+  beta.setZero();
+  for (int c = 0; c < columns_; ++c) {
+    if (c == 0 || weights(0, c) > 0.0) beta(0, c) = weights(0, c);
+  }
+  beta.row(0) /= stay;
   return outcome;
 }
 

@@ -52,6 +52,28 @@ TEST(JpdaSolver, HandComputedTwoTracksTwoPlots) {
   EXPECT_LT((k_best.beta - expected).cwiseAbs().maxCoeff(), 1e-12);
 }
 
+TEST(JpdaSolver, HandComputedOneTrackIsItsPdaWeights) {
+  // GIVEN one track gating z1 and z3 (z2 outside its gate): L = [3, 0, 1], miss 0.5,
+  // lambda 2. Events: miss 0.5, z1 3 / 2 = 1.5, z3 1 / 2 = 0.5; Z = 2.5 (the PDA weights).
+  JpdaProblem problem;
+  problem.likelihood = (Eigen::MatrixXd(1, 3) << 3.0, 0.0, 1.0).finished();
+  problem.miss = Eigen::VectorXd::Constant(1, 0.5);
+  problem.clutter_density = 2.0;
+  const Eigen::MatrixXd expected = (Eigen::MatrixXd(1, 4) << 0.2, 0.6, 0.0, 0.2).finished();
+  JpdaSolver solver;
+  const JpdaResult& exact = solver.solve(problem);  // WHEN solved exactly
+  EXPECT_EQ(exact.status, JpdaStatus::kOk);         // THEN three events, the PDA weights
+  EXPECT_EQ(exact.hypotheses, 3);
+  EXPECT_EQ(solver.exact_outcome().states, 2);
+  EXPECT_LT((exact.beta - expected).cwiseAbs().maxCoeff(), 1e-15);
+  JpdaOptions bounded;  // AND a state bound below its two states leaves it to k-best
+  bounded.max_exact_states = 1;
+  JpdaSolver small(bounded);
+  EXPECT_EQ(small.solve(problem).hypotheses, 3);  // which enumerates all three
+  EXPECT_FALSE(small.exact_outcome().completed);
+  EXPECT_LT((small.solve(problem).beta - expected).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(JpdaSolver, ExactMatchesBruteForceOnRandomSmallClusters) {
   std::mt19937_64 rng(20240603);
   std::uniform_int_distribution<int> tracks_of(1, 6), plots_of(1, 7);

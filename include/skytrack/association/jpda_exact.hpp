@@ -77,6 +77,10 @@ class JpdaExact {
     std::uint32_t stamp = 0;
   };
 
+  /// compute() for a cluster of one track: it shares no plot, so its one step is the stay
+  /// edge; the same sums in the same order, without building the graph.
+  JpdaExactOutcome one_track(const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                             std::int64_t max_states, Eigen::Ref<Eigen::MatrixXd> beta) noexcept;
   void classify_plots(const Eigen::Ref<const Eigen::MatrixXd>& weights) noexcept;
   void order_tracks() noexcept;
   bool assign_key_bits() noexcept;
