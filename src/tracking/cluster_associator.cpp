@@ -49,12 +49,14 @@ void ClusterAssociator::solve(const Look& look, const std::vector<Candidate>& po
   const std::span<const Cluster> clusters =
       clusters_.build(look.tracks, static_cast<int>(pre.plots().size()), pairs_);
   const auto n_all = static_cast<std::size_t>(look.tracks);
-  std::vector<int> first(n_all + 1, 0);  // range of `list` per track
+  std::vector<int>& first = first_;  // range of `list` per track
+  first.assign(n_all + 1, 0);
   for (const int k : list) ++first[pool[k].track + 1];
   for (std::size_t t = 0; t < n_all; ++t) first[t + 1] += first[t];
 
-  std::vector<double> beta;
-  std::vector<int> mine;
+  std::vector<double>& beta = beta_;
+  std::vector<int>& mine = mine_;
+  JpdaProblem& problem = problem_;
   for (const Cluster& cluster : clusters) {
     const auto n_tracks = static_cast<Eigen::Index>(cluster.tracks.size());
     const auto n_plots = static_cast<Eigen::Index>(cluster.plots.size());
@@ -66,9 +68,8 @@ void ClusterAssociator::solve(const Look& look, const std::vector<Candidate>& po
     look.report.point.largest_cluster =
         std::max(look.report.point.largest_cluster, static_cast<int>(n_tracks));
     // Each plot's likelihood ratio against clutter in its own measurement space.
-    JpdaProblem problem;
-    problem.likelihood = Eigen::MatrixXd::Zero(n_tracks, n_plots);
-    problem.miss = Eigen::VectorXd::Constant(n_tracks, 1.0 - pd * gate_probability);
+    problem.likelihood.setZero(n_tracks, n_plots);
+    problem.miss.setConstant(n_tracks, 1.0 - pd * gate_probability);
     problem.clutter_density = 1.0;
     const auto column = [&](int plot) {
       return std::find(cluster.plots.begin(), cluster.plots.end(), plot) - cluster.plots.begin();

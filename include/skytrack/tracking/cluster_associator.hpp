@@ -57,6 +57,11 @@ class ClusterAssociator {
   JpdaResult pda_result_;
   std::vector<GatedPair> pairs_;
   std::vector<std::uint8_t> false_plots_;
+  // Per-solve workspaces, kept from cluster to cluster and look to look.
+  JpdaProblem problem_;
+  std::vector<int> first_;
+  std::vector<double> beta_;
+  std::vector<int> mine_;
 };
 
 }  // namespace skytrack
