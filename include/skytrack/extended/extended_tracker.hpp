@@ -94,6 +94,7 @@ class ExtendedTracker {
   void one_object_only(const std::vector<int>& group);  // a split where one object is all
   bool claim_by_confirmed(const std::vector<int>& group);
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
+  void drop_lone_plots(int t);   // lone plots away from the track's cluster of this scan
   bool clutter_likelier(int t);  // the track's plots of this scan likelier clutter
   void two_point_velocity(ExtendedTrack& track) const noexcept;
   void manage(ExtendedScanReport& report);
@@ -122,7 +123,8 @@ class ExtendedTracker {
   std::vector<const std::vector<int>*> unassigned_;
   std::vector<Eigen::Vector2d> plane_positions_;  // PlotMeasurements in the tracking plane
   std::vector<Eigen::Matrix2d> plane_noises_;
-  std::vector<double> gate_areas_;  // [m^2] per track, its plot gate's area this scan
+  std::vector<double> gate_areas_;    // [m^2] per track, its plot gate's area this scan
+  std::vector<int> partition_sizes_;  // per plot, the size of its partition this scan
 };
 
 }  // namespace skytrack::extended
