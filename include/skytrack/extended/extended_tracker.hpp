@@ -8,10 +8,11 @@
 // has no shape and their velocities part them by the next scan: then both coast (not a
 // miss); a tentative track never shares a confirmed one's partition; a partition no track gates but
 // whose plots lie in the plot gate of a confirmed track that found none of its own goes to that
-// track (the object seen off its prediction), the others start tentative tracks; each track is
-// updated by the profile's estimator; tentative tracks are confirmed when they keep taking
-// partitions, and tracks that stop taking them are deleted. Deterministic: no random numbers, ties
-// broken by track number and plot index.
+// track (the object seen off its prediction), the others start tentative tracks; a plot alone
+// in its partition joins a track's update only beside, and within the object's reach of, a
+// partition of the track's own; each track is updated by the profile's estimator; tentative tracks
+// are confirmed when they keep taking partitions, and tracks that stop taking them are deleted.
+// Deterministic: no random numbers, ties broken by track number and plot index.
 #include <cstdint>
 #include <span>
 #include <vector>
