@@ -124,6 +124,10 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
     }
   }
   report.partitions = static_cast<int>(groups_.size());
+  partition_sizes_.assign(n, 0);
+  for (const std::vector<int>& group : groups_) {
+    for (int i : group) partition_sizes_[i] = static_cast<int>(group.size());
+  }
   associate(groups_, report);
   manage(report);
   return report;
@@ -183,6 +187,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     if (!claim_by_confirmed(*group)) unassigned[kept++] = group;
   }
   unassigned.resize(kept);
+  for (int t = 0; t < track_count; ++t) drop_lone_plots(t);
   for (int t = 0; t < track_count; ++t) {
     ExtendedTrack& track = tracks_[t];
     const std::vector<int>& plots = track_plots_[t];
@@ -216,6 +221,41 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     ++report.updated;
   }
   for (const std::vector<int>* group : unassigned) initiate(*group, report);
+}
+
+void ExtendedTracker::drop_lone_plots(int t) {
+  // An object seen gives a cluster of plots (a partition of at least min_partition_plots,
+  // as a new track needs). A plot alone in its partition is an outlying scatterer of that
+  // object only within the object's reach of its cluster; elsewhere, or in a scan without
+  // a cluster, it is clutter, which a gate widened by a coast holds in growing numbers:
+  // taken, a few lone plots turned a coasting track off its object, or swelled a returning
+  // object's scan into a count that read as clutter and deleted the track.
+  std::vector<int>& plots = track_plots_[t];
+  const int min_plots = std::max(1, spec_.min_partition_plots);
+  auto lone = [this, min_plots](int i) { return partition_sizes_[i] < min_plots; };
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+  int clustered = 0;
+  for (int i : plots) {
+    if (!lone(i)) mean += positions_[i], noise += noises_[i], ++clustered;
+  }
+  if (clustered == static_cast<int>(plots.size())) return;
+  if (clustered == 0) {
+    plots.clear();
+    return;
+  }
+  mean /= static_cast<double>(clustered);
+  noise /= static_cast<double>(clustered);
+  // The whole extent X, not the scatter X/4: the cluster may lie at one end of the object
+  // and the lone plot at the other, and X estimated on few plots may fall short of the
+  // object. (1 + 1/n): the cluster's mean of n plots scatters about the object's centre too.
+  const double spread = 1.0 + 1.0 / static_cast<double>(clustered);
+  const Eigen::LLT<Eigen::Matrix2d> llt(spread * (association_extents_[t] + noise));
+  std::erase_if(plots, [&](int i) {
+    if (!lone(i)) return false;
+    const Eigen::Vector2d d = positions_[i] - mean;
+    return llt.info() != Eigen::Success || !(d.dot(llt.solve(d)) <= spec_.plot_gate);
+  });
 }
 
 bool ExtendedTracker::clutter_likelier(int t) {

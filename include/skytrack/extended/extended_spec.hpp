@@ -117,7 +117,9 @@ struct ExtendedSpec {
   /// G = HPH' + X/4 + R (X/4: the spread of scatterers uniform over the ellipse; its
   /// outline is at d^2 = 4), which keeps clutter beside the object out [chi^2, 2 dof].
   double plot_gate = 13.8;
-  int min_partition_plots = 2;        // fewer plots start no track and update no track
+  /// A partition of fewer plots starts no track; its plots (lone plots) update a track only
+  /// beside a partition of at least this many the track takes, and near it (extended_tracker).
+  int min_partition_plots = 2;
   int confirm_hits = 3;               // a tentative track is confirmed after this many updates...
   int tentative_max_misses = 1;       // ...and deleted after this many consecutive misses
   int delete_misses = 3;              // ...a confirmed one after this many (existence off)

@@ -8,10 +8,11 @@
 // has no shape and their velocities part them by the next scan: then both coast (not a
 // miss); a tentative track never shares a confirmed one's partition; a partition no track gates but
 // whose plots lie in the plot gate of a confirmed track that found none of its own goes to that
-// track (the object seen off its prediction), the others start tentative tracks; each track is
-// updated by the profile's estimator; tentative tracks are confirmed when they keep taking
-// partitions, and tracks that stop taking them are deleted. Deterministic: no random numbers, ties
-// broken by track number and plot index.
+// track (the object seen off its prediction), the others start tentative tracks; a plot alone
+// in its partition joins a track's update only beside, and within the object's reach of, a
+// partition of the track's own; each track is updated by the profile's estimator; tentative tracks
+// are confirmed when they keep taking partitions, and tracks that stop taking them are deleted.
+// Deterministic: no random numbers, ties broken by track number and plot index.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -94,6 +95,7 @@ class ExtendedTracker {
   void one_object_only(const std::vector<int>& group);  // a split where one object is all
   bool claim_by_confirmed(const std::vector<int>& group);
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
+  void drop_lone_plots(int t);   // lone plots away from the track's cluster of this scan
   bool clutter_likelier(int t);  // the track's plots of this scan likelier clutter
   void two_point_velocity(ExtendedTrack& track) const noexcept;
   void manage(ExtendedScanReport& report);
@@ -122,7 +124,8 @@ class ExtendedTracker {
   std::vector<const std::vector<int>*> unassigned_;
   std::vector<Eigen::Vector2d> plane_positions_;  // PlotMeasurements in the tracking plane
   std::vector<Eigen::Matrix2d> plane_noises_;
-  std::vector<double> gate_areas_;  // [m^2] per track, its plot gate's area this scan
+  std::vector<double> gate_areas_;    // [m^2] per track, its plot gate's area this scan
+  std::vector<int> partition_sizes_;  // per plot, the size of its partition this scan
 };
 
 }  // namespace skytrack::extended
