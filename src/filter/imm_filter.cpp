@@ -137,8 +137,8 @@ ImmEstimate ImmFilter::initial(const Gaussian& state, const Eigen::VectorXd& pro
   const int n = mode_count();
   const bool usable = probabilities.size() == n && probabilities.allFinite() &&
                       (probabilities.array() >= 0.0).all() && probabilities.sum() > 0.0;
-  out.probabilities = usable ? ModeProbabilities(probabilities / probabilities.sum())
-                             : ModeProbabilities::Constant(n, 1.0 / n);
+  out.probabilities = usable ? Eigen::VectorXd(probabilities / probabilities.sum())
+                             : Eigen::VectorXd::Constant(n, 1.0 / n);
   return out;
 }
 
@@ -184,8 +184,8 @@ void ImmFilter::predict_modes(const ImmEstimate& posterior, double time, int cer
     if (steps == 1.0) return transition_(i, j);
     return (i == j ? 1.0 - steps : 0.0) + steps * transition_(i, j);
   };
-  ModeProbabilities& c = out.probabilities;
-  c = ModeProbabilities::Zero(n);
+  Eigen::VectorXd& c = out.probabilities;
+  c.setZero(n);
   if (certain >= 0) {
     // mu is 1 at `certain`: c_j = p_certain,j, and every mode's mixed estimate is the certain
     // mode's own (its mixing weight is 1, the others' 0), so one prediction serves them all.

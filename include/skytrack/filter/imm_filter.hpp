@@ -46,14 +46,11 @@ namespace skytrack {
 
 inline constexpr int kMaxImmModes = 32;
 
-/// Mode probabilities, held inline (a track's estimate is copied every look: no allocation).
-using ModeProbabilities = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxImmModes, 1>;
-
 struct ImmEstimate {
-  std::vector<Gaussian> modes;      // one per mode, all in the filter's StateLayout
-  ModeProbabilities probabilities;  // mu_j (posterior) or c_j (after predict)
-  double time = 0.0;                // [s]
-  std::uint32_t failed_modes = 0;   // bit j: mode j kept its prediction (numeric failure)
+  std::vector<Gaussian> modes;     // one per mode, all in the filter's StateLayout
+  Eigen::VectorXd probabilities;   // mu_j (posterior) or c_j (after predict)
+  double time = 0.0;               // [s]
+  std::uint32_t failed_modes = 0;  // bit j: mode j kept its prediction (numeric failure)
 
   bool numeric_failure() const noexcept { return failed_modes != 0; }
 };
