@@ -31,7 +31,7 @@ void TrackReporter::report(const std::vector<PointTrack>& tracks, const ImmFilte
     // The estimate at the frame's time: the track's own, or its prediction kept in scratch.
     const auto at = [&](const ImmEstimate& e) -> const ImmEstimate& {
       if (e.time >= time) return e;
-      scratch = filter.predict(e, time);
+      filter.predict(e, time, scratch);
       return scratch;
     };
     const ImmEstimate* at_time = &at(track.estimate);
