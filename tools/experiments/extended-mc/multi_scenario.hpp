@@ -1,6 +1,9 @@
 #pragma once
 // Several extended objects in clutter, two of them crossing, for the ExtendedTracker with
-// each estimator (issue 27, deliverable 5). Generated here, not a shipped YAML scenario.
+// each estimator (issue 27, deliverable 5). Generated here (table C of docs/extended.md);
+// the same scenario ships as config/scenarios/extended_crossing.yaml for `skytrack simulate`
+// / `track` / `eval` and skytrackd (same objects, noise, detection and clutter, the
+// simulator's own random draws; tools/experiments/extended-crossing.sh).
 #include <cstdint>
 #include <vector>
 
