@@ -42,6 +42,7 @@ const Case kCases[] = {
     {"paper001_mmbpf", "bernoulli"},    // mode: bernoulli
     {"paper000_exp1_groups", "group"},  // mode: group
     {"paper002_extended", "extended"},  // mode: extended
+    {"extended_crossing", "extended"},  // extended: four objects, a crossing, clutter
 };
 
 std::string source(const std::string& relative) {
