@@ -183,6 +183,7 @@ void read_extended(YamlSection s, TrackingProfile& p) {
   mem.number("initial_orientation_var", e.mem_ekf.initial_orientation_var, Range{1e-6, 10.0});
   mem.number("initial_axis_var", e.mem_ekf.initial_axis_var, Range{1e-3, 1e10});
   mem.number("spread_bound_sigmas", e.mem_ekf.spread_bound_sigmas, Range{0.0, 10.0});
+  mem.number("min_axis", e.mem_ekf.min_axis, Range{1e-3, 1e5});
   mem.finish();
   s.number("partition_distance", e.partition_distance, Range{1e-3, 1e6});
   s.number("gate", e.gate, Range{1e-3, 1e4});

@@ -127,6 +127,13 @@ UpdateStatus mem_ekf_update(const MemEkfSpec& spec, ExtendedObject& object,
     object.shape_cov = 0.5 * (object.shape_cov + object.shape_cov.transpose()).eval();
   }
   bound_by_spread(spec.spread_bound_sigmas, plots, noise, object.shape);
+  // Plots no wider than their noise along an axis leave the object unresolved there, not of
+  // zero size: the semi-axes keep a floor, so the extent stays definite.
+  for (int i = 1; i <= 2; ++i) {
+    if (std::abs(object.shape[i]) < spec.min_axis) {
+      object.shape[i] = std::copysign(spec.min_axis, object.shape[i]);
+    }
+  }
   object.extent = mem_ekf_extent(object.shape);
   return status;
 }

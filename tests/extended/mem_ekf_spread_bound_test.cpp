@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include "skytrack/extended/ellipse_geometry.hpp"
 #include "skytrack/extended/mem_ekf.hpp"
@@ -100,6 +101,26 @@ TEST(MemEkfSpreadBound, TwoPlotsAreNoBound) {
   mem_ekf_update(capped, a, plots, R);
   mem_ekf_update(free, b, plots, R);
   EXPECT_EQ(a.extent, b.extent);
+}
+
+TEST(MemEkfSpreadBound, PlotsNoWiderThanTheirNoiseLeaveTheAxisAtItsFloor) {
+  // GIVEN five plots on one line along x (no spread across it, less than their 5 m noise)
+  MemEkfSpec spec;
+  ExtendedObject object;
+  object.P = KinMat::Identity() * 100.0;
+  object.shape = Eigen::Vector3d(0.0, 100.0, 25.0);
+  object.shape_cov = Eigen::Vector3d(0.5, 2500.0, 2500.0).asDiagonal();
+  const std::vector<Eigen::Vector2d> plots = {
+      {-80.0, 0.0}, {-40.0, 0.0}, {0.0, 0.0}, {40.0, 0.0}, {80.0, 0.0}};
+  const Eigen::Matrix2d R = Eigen::Matrix2d::Identity() * 25.0;
+  // WHEN they update the track
+  mem_ekf_update(spec, object, plots, R);
+  // THEN the update takes the minor semi-axis down to its floor, min_axis (1 m), not to
+  // zero: the extent stays positive definite (one a display or an evaluator can use)
+  const EllipseAxes axes = ellipse_axes(object.extent);
+  EXPECT_NEAR(axes.minor, spec.min_axis, 1e-9);
+  EXPECT_GT(object.extent.determinant(), 0.0);
+  EXPECT_GT(axes.major, 50.0);
 }
 
 }  // namespace

@@ -78,6 +78,9 @@ struct MemEkfSpec {
   /// it (at least 3 plots): u'Xu <= 4 (T_u / chi^2_{n-1} - u'Ru), chi^2_{n-1} its lower
   /// quantile at this many standard normal deviates (2.33: 1 %); 0 = no cap (mem_ekf.cpp).
   double spread_bound_sigmas = 2.33;
+  /// [m] floor of a semi-axis after a scan's update: plots spread no wider than their noise
+  /// leave the object unresolved along that axis, not of zero size (the extent stays definite).
+  double min_axis = 1.0;
   bool operator==(const MemEkfSpec&) const = default;
 };
 
