@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 
@@ -53,6 +54,7 @@ JpdaExactOutcome JpdaExact::compute(const Eigen::Ref<const Eigen::MatrixXd>& wei
   build_steps(weights);
   outcome.key_bits = key_bits_;
   outcome.max_frontier = max_frontier_;
+  if (must_stop(max_states)) return outcome;
   const bool done = forward(max_states);
   outcome.states = static_cast<std::int64_t>(keys_.size());
   if (!done) return outcome;
@@ -91,6 +93,46 @@ JpdaExactOutcome JpdaExact::one_track(const Eigen::Ref<const Eigen::MatrixXd>& w
   }
   beta.row(0) /= stay;
   return outcome;
+}
+
+// A lower bound on each level's states: placed tracks with disjoint sets S_i of live plots
+// they gate reach at least prod (1 + |S_i|) distinct keys (each misses or takes one plot of
+// its S_i, the others miss; live plots have distinct key bits). Levels whose bounds sum past
+// max_states prove that the forward pass would stop at the bound. Checked only when a level
+// could hold that many (a frontier wider than log2(max_states / tracks)) and every track
+// can miss (stay > 0).
+bool JpdaExact::must_stop(std::int64_t max_states) noexcept {
+  if (!(std::ldexp(1.0, max_frontier_) * tracks_ > static_cast<double>(max_states))) return false;
+  for (const Step& step : steps_) {
+    if (!(step.stay > 0.0)) return false;
+  }
+  double total = 1.0;  // the root; the pass stops when all its levels together exceed the bound
+  for (int k = 0; k < tracks_; ++k) {
+    // Round by round each placed track claims one more live plot of its own: balanced sets
+    // give a larger product than one track taking all it gates.
+    claimed_.assign(shared_column_.size(), 0);
+    taken_.assign(at(k + 1), 0);
+    for (bool any = true; any;) {
+      any = false;
+      for (int j = 0; j <= k; ++j) {
+        const int t = order_[at(j)];
+        for (int i = track_begin_[at(t)]; i < track_begin_[at(t + 1)]; ++i) {
+          const int p = track_shared_[at(i)];
+          if (last_[at(p)] > k && claimed_[at(p)] == 0) {  // gated by a track still to come
+            claimed_[at(p)] = 1;
+            ++taken_[at(j)];
+            any = true;
+            break;
+          }
+        }
+      }
+    }
+    double states = 1.0;
+    for (int j = 0; j <= k; ++j) states *= 1.0 + taken_[at(j)];
+    total += states;
+    if (total > static_cast<double>(max_states)) return true;
+  }
+  return false;
 }
 
 // Shared plots (gated by >= 2 tracks) get an index and per-track lists (CSR).

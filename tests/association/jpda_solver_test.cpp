@@ -1,5 +1,7 @@
 #include "skytrack/association/jpda_solver.hpp"
 
+#include "skytrack/association/jpda_exact.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -256,6 +258,40 @@ TEST(JpdaSolver, FallsBackWhenTheExactStateBoundIsReached) {
   EXPECT_FALSE(solver.exact_outcome().completed);
   EXPECT_EQ(solver.solve_exact(problem).status, JpdaStatus::kExactLimit);
   expect_rows_sum_to_one(solver.solve_exact(problem).beta);
+}
+
+TEST(JpdaExact, SkipsOnlyPassesThatWouldStopAtTheStateBound) {
+  // GIVEN dense chain clusters and small state bounds; WHEN the exact method runs with the
+  // bound and without one THEN it completes exactly when the whole pass fits the bound, and a
+  // pass it skips (proved to stop by its lower bound, no state made) would have exceeded it.
+  std::mt19937_64 rng(77);
+  std::uniform_int_distribution<int> tracks_of(6, 12);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  JpdaExact exact;
+  int skipped = 0, stopped = 0, completed = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const JpdaProblem p =
+        test::chain_cluster(tracks_of(rng), 0.8 + 1.2 * unit(rng), 0.05 + 0.3 * unit(rng), rng);
+    Eigen::MatrixXd w(p.likelihood.rows(), p.likelihood.cols() + 1);
+    w.col(0) = p.miss;
+    w.rightCols(p.likelihood.cols()) = p.likelihood / p.clutter_density;
+    Eigen::MatrixXd beta = Eigen::MatrixXd::Zero(w.rows(), w.cols());
+    const std::int64_t all = exact.compute(w, std::int64_t{1} << 40, beta).states;
+    for (const std::int64_t bound : {16, 64, 256}) {
+      const JpdaExactOutcome bounded = exact.compute(w, bound, beta);
+      ASSERT_EQ(bounded.completed, all <= bound) << "trial " << trial << " bound " << bound;
+      if (bounded.completed) {
+        ++completed;
+      } else if (bounded.states == 0) {
+        ++skipped;
+      } else {
+        ++stopped;
+      }
+    }
+  }
+  EXPECT_GT(skipped, 0);  // the lower bound proved some stops in advance
+  EXPECT_GT(stopped, 0);  // and left others to the pass itself
+  EXPECT_GT(completed, 0);
 }
 
 TEST(JpdaSolver, InvalidInputGivesAllMissAndAStatus) {

@@ -81,6 +81,9 @@ class JpdaExact {
   /// edge; the same sums in the same order, without building the graph.
   JpdaExactOutcome one_track(const Eigen::Ref<const Eigen::MatrixXd>& weights,
                              std::int64_t max_states, Eigen::Ref<Eigen::MatrixXd> beta) noexcept;
+  /// True when some level must hold more than max_states states, so the forward pass would
+  /// stop at the bound: skipping it gives the stopped pass's outcome without its work.
+  bool must_stop(std::int64_t max_states) noexcept;
   void classify_plots(const Eigen::Ref<const Eigen::MatrixXd>& weights) noexcept;
   void order_tracks() noexcept;
   bool assign_key_bits() noexcept;
@@ -105,6 +108,8 @@ class JpdaExact {
   std::vector<int> order_;  // processing order of the tracks
   std::vector<char> placed_;
   std::vector<int> first_, last_, slot_;  // per shared plot: live interval, key bit
+  std::vector<char> claimed_;             // must_stop: a live plot given to a placed track
+  std::vector<int> taken_;                // must_stop: live plots given to each placed track
   std::vector<std::uint64_t> keep_;       // key bits still live after the k-th track
   std::vector<Step> steps_;
   std::vector<Edge> edges_;
