@@ -161,6 +161,7 @@ void read_extended(YamlSection s, TrackingProfile& p) {
   YamlSection motion = s.section("motion");
   motion.number("time_constant", e.motion.time_constant, Range{1e-3, 1e6});
   motion.number("accel_noise", e.motion.accel_noise, Range{0.0, kMaxAccel});
+  motion.number("manoeuvre_accel", e.motion.manoeuvre_accel, Range{0.0, kMaxAccel});
   motion.finish();
   YamlSection smf = s.section("smf");
   smf.number("scattering", e.smf.scattering, Range{1e-3, 10.0});

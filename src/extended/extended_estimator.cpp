@@ -23,16 +23,17 @@ ExtendedObject ExtendedEstimator::initiate(const KinVec& x, const KinMat& P,
   return object;
 }
 
-void ExtendedEstimator::predict(ExtendedObject& object, double dt) const noexcept {
+void ExtendedEstimator::predict(ExtendedObject& object, double dt,
+                                const MotionSpec& motion) const noexcept {
   switch (spec_.kind) {
     case EstimatorKind::kSmf:
-      smf_predict(spec_.motion, object, dt);
+      smf_predict(motion, object, dt);
       return;
     case EstimatorKind::kRandomMatrix:
-      random_matrix_predict(spec_.motion, spec_.random_matrix, object, dt);
+      random_matrix_predict(motion, spec_.random_matrix, object, dt);
       return;
     case EstimatorKind::kMemEkf:
-      mem_ekf_predict(spec_.motion, spec_.mem_ekf, object, dt);
+      mem_ekf_predict(motion, spec_.mem_ekf, object, dt);
       return;
   }
 }

@@ -102,10 +102,10 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
 
   association_extents_.clear();
   was_unresolved_.clear();
-  prior_accel_.clear();
+  priors_.clear();
   for (ExtendedTrack& track : tracks_) {
     was_unresolved_.push_back(track.unresolved);
-    prior_accel_.emplace_back(track.object.x[4], track.object.x[5]);
+    priors_.push_back(track.object);
     if (dt > 0.0) estimator_.predict(track.object, dt);
     track.plots = 0;
     track.unresolved = false;
@@ -193,19 +193,22 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     const std::vector<int>& plots = track_plots_[t];
     // Fewer plots than start a track are taken as clutter in a scan the object was missed:
     // one stray plot would drag the centre, velocity and extent off the object.
-    if (static_cast<int>(plots.size()) < std::max(1, spec_.min_partition_plots) ||
-        clutter_likelier(t)) {
+    const bool enough = static_cast<int>(plots.size()) >= std::max(1, spec_.min_partition_plots);
+    const bool turned = enough && predict_manoeuvre_if_likelier(t);
+    if (!enough || clutter_likelier(t)) {
+      if (turned) {  // taken as clutter: the object is unseen, nothing shows a manoeuvre
+        track.object = priors_[t];
+        estimator_.predict(track.object, scan_dt_);
+      }
       // Unseen: coast at constant velocity (the acceleration estimated before is no evidence
       // that the object keeps accelerating; extrapolated it carries the coast off).
       if (spec_.coast_constant_velocity && scan_dt_ > 0.0) {
-        coast_constant_velocity(track.object.x, prior_accel_[t], scan_dt_);
+        const Eigen::Vector2d accel(priors_[t].x[4], priors_[t].x[5]);
+        coast_constant_velocity(track.object.x, accel, scan_dt_);
       }
       continue;
     }
-    plot_buffer_.clear();
-    Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
-    for (int i : plots) plot_buffer_.push_back(positions_[i]), noise += noises_[i];
-    noise /= static_cast<double>(plots.size());
+    const Eigen::Matrix2d noise = buffer_track_plots(t);
     // The plot gate's area before the update, where clutter could have come from.
     const PosMat H = position_matrix();
     const Eigen::Matrix2d G =
@@ -258,14 +261,46 @@ void ExtendedTracker::drop_lone_plots(int t) {
   });
 }
 
+Eigen::Matrix2d ExtendedTracker::buffer_track_plots(int t) {
+  plot_buffer_.clear();
+  Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+  for (int i : track_plots_[t]) plot_buffer_.push_back(positions_[i]), noise += noises_[i];
+  return noise / static_cast<double>(track_plots_[t].size());
+}
+
+bool ExtendedTracker::predict_manoeuvre_if_likelier(int t) {
+  // Two noise levels, chosen by the plots' likelihood under each prediction (no threshold
+  // of its own): a quiet level keeps the gates of objects going straight tight against
+  // clutter and crossing neighbours, the manoeuvre level follows a turn the quiet one lags.
+  const MotionSpec& quiet = spec_.motion;
+  if (!(quiet.manoeuvre_accel > quiet.accel_noise) || !(scan_dt_ > 0.0)) return false;
+  ExtendedTrack& track = tracks_[t];
+  const Eigen::Matrix2d noise = buffer_track_plots(t);
+  const Eigen::Matrix2d spread = kScatter * association_extents_[t] + noise;
+  const PosMat H = position_matrix();
+  auto log_f = [&](const ExtendedObject& o) {
+    return object_plots_log_density(plot_buffer_, o.position(), H * o.P * H.transpose(), spread);
+  };
+  MotionSpec manoeuvre = quiet;
+  manoeuvre.accel_noise = quiet.manoeuvre_accel;
+  ExtendedObject turning = priors_[t];
+  estimator_.predict(turning, scan_dt_, manoeuvre);
+  // Page's CUSUM at zero: the evidence for a manoeuvre over the scans since it last fell to
+  // zero, so a turn shown by several scans holds the manoeuvre level through a quiet-looking
+  // scan of few plots.
+  const double llr = log_f(turning) - log_f(track.object);
+  double& evidence = track.manoeuvre_evidence;
+  evidence = std::isfinite(llr) ? std::max(0.0, evidence + llr) : 0.0;  // no density: quiet
+  if (!(evidence > 0.0)) return false;
+  track.object = turning;
+  return true;
+}
+
 bool ExtendedTracker::clutter_likelier(int t) {
   // The plots' joint density under the track (centre N(c, HPH'), each plot scattered by
   // X/4 + R) against clutter of density lambda in a scan that missed the object.
   if (!spec_.clutter_scan_test) return false;
-  plot_buffer_.clear();
-  Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
-  for (int i : track_plots_[t]) plot_buffer_.push_back(positions_[i]), noise += noises_[i];
-  noise /= static_cast<double>(track_plots_[t].size());
+  const Eigen::Matrix2d noise = buffer_track_plots(t);
   const PosMat H = position_matrix();
   const ExtendedTrack& track = tracks_[t];
   const Eigen::Matrix2d spread = kScatter * association_extents_[t] + noise;

@@ -95,6 +95,9 @@ def stationary_false(n):
         still += sum(1 for t in far if math.hypot(*t["velocity"][:2]) < STILL)
     return false / max(scans, 1), still / max(false, 1)
 
+def fmt(x):  # None: no track matched a boat (eval has no pairs to score)
+    return "-" if x is None else f"{x:.1f}"
+
 print("| scenario | scans | GOSPA [m] | OSPA [m] | RMSE pos [m] | number changes boat 1 / 2 "
       "| missed boats / scan | false tracks / scan | of which still |")
 print("|---|---|---|---|---|---|---|---|---|")
@@ -106,7 +109,7 @@ for n in scenarios:
     good += c1 <= 1 and c2 <= 1
     per_scan, still = stationary_false(n)
     print(f"| {n} | {e['scans']} | {e['gospa_mean']:.1f} | {e['ospa_mean']:.1f} | "
-          f"{e['rmse_position']:.1f} | {c1} / {c2} | {e['gospa_missed_mean']:.2f} | "
+          f"{fmt(e['rmse_position'])} | {c1} / {c2} | {e['gospa_missed_mean']:.2f} | "
           f"{e['gospa_false_mean']:.2f} | {100 * still:.0f} % |")
 print(f"\nScenarios with at most one number change per boat: {good} of {len(scenarios)}")
 PY

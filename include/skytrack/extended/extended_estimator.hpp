@@ -17,7 +17,11 @@ class ExtendedEstimator {
   /// extent X (MEM-EKF: its orientation and semi-axes from X).
   ExtendedObject initiate(const KinVec& x, const KinMat& P, const Eigen::Matrix2d& extent) const;
 
-  void predict(ExtendedObject& object, double dt) const noexcept;
+  void predict(ExtendedObject& object, double dt) const noexcept {
+    predict(object, dt, spec_.motion);
+  }
+  /// The same with another motion (a manoeuvring object's noise level).
+  void predict(ExtendedObject& object, double dt, const MotionSpec& motion) const noexcept;
 
   /// One scan's plots of this object (tracking-frame positions [m]) with their noise
   /// covariance R [m^2]; SMF-EOT bounds the noise by E(0, k^2 R), k = smf.bound_sigmas.

@@ -35,6 +35,10 @@ constexpr std::string_view to_string(EstimatorKind kind) {
 struct MotionSpec {
   double time_constant = 40.0;  // [s] theta
   double accel_noise = 0.5;     // [m/s^2] q
+  /// [m/s^2] q of a manoeuvring object (ExtendedTracker, not the estimators): a scan whose
+  /// plots are likelier under a prediction with it than with accel_noise is predicted with
+  /// it. The objects' hardest manoeuvre; 0 = one level only.
+  double manoeuvre_accel = 0.0;
   bool operator==(const MotionSpec&) const = default;
 };
 

@@ -40,6 +40,7 @@ struct ExtendedTrack {
   double birth_variance = 0.0;  // [m^2] its first centre's variance per axis
   /// ln(r / (1 - r)), r the probability its object exists (extended_existence.hpp).
   double existence_log_odds = 0.0;
+  double manoeuvre_evidence = 0.0;  // CUSUM of log f_manoeuvre - log f_quiet over its scans
 
   double existence() const;                                        // r
   Eigen::Vector2d position() const { return object.position(); }   // [m] centre
@@ -97,6 +98,8 @@ class ExtendedTracker {
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
   void drop_lone_plots(int t);   // lone plots away from the track's cluster of this scan
   bool clutter_likelier(int t);  // the track's plots of this scan likelier clutter
+  bool predict_manoeuvre_if_likelier(int t);  // true: predicted again with manoeuvre_accel
+  Eigen::Matrix2d buffer_track_plots(int t);  // into plot_buffer_; returns their mean noise
   void two_point_velocity(ExtendedTrack& track) const noexcept;
   void manage(ExtendedScanReport& report);
 
@@ -117,7 +120,7 @@ class ExtendedTracker {
   std::vector<Gated> gated_;
   std::vector<Eigen::Matrix2d> association_extents_;  // per track, this scan
   std::vector<char> was_unresolved_;                  // per track, the last scan's flag
-  std::vector<Eigen::Vector2d> prior_accel_;          // per track, acceleration before predict
+  std::vector<ExtendedObject> priors_;                // per track, the object before predict
   std::vector<Eigen::Vector2d> split_centre_;         // per gating track, its centre in the split
   std::vector<Eigen::Matrix2d> split_cov_;
   std::vector<int> split_owner_;  // per plot of the partition, its index into gated_
