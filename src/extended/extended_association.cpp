@@ -15,7 +15,6 @@
 namespace skytrack::extended {
 namespace {
 
-constexpr double kScatter = 0.25;  // covariance of a point uniform over E(0, X) is X / 4
 // Assign-and-move rounds of a shared partition's split: the centres settle in two or three.
 constexpr int kSplitIterations = 3;
 
@@ -101,7 +100,7 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
       split_owner_[p] = -1;
       for (int g = 0; g < k; ++g) {
         const Eigen::Matrix2d G =
-            split_cov_[g] + kScatter * association_extents_[gated_[g].track] + noises_[i];
+            split_cov_[g] + kUniformScatter * association_extents_[gated_[g].track] + noises_[i];
         const Eigen::LLT<Eigen::Matrix2d> llt(G);
         if (llt.info() != Eigen::Success) continue;
         const Eigen::Vector2d nu = positions_[i] - split_centre_[g];
@@ -125,7 +124,7 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
       if (count == 0) continue;
       mean /= count;
       const Eigen::Matrix2d spread =
-          (kScatter * association_extents_[gated_[g].track] + noise / count) / count;
+          (kUniformScatter * association_extents_[gated_[g].track] + noise / count) / count;
       const Eigen::LLT<Eigen::Matrix2d> llt(prior + spread);
       if (llt.info() != Eigen::Success) continue;
       const Eigen::Matrix2d K = llt.solve(prior).transpose();  // prior (prior + spread)^-1
@@ -138,7 +137,7 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
     if (split_owner_[p] < 0) continue;
     const int t = gated_[split_owner_[p]].track;
     const int i = group[p];
-    if (gate_distance(t, positions_[i], noises_[i], kScatter, nullptr) <= spec_.plot_gate) {
+    if (gate_distance(t, positions_[i], noises_[i], kUniformScatter, nullptr) <= spec_.plot_gate) {
       track_plots_[t].push_back(i);
     }
   }
@@ -161,7 +160,7 @@ void ExtendedTracker::one_object_only(const std::vector<int>& group) {
   for (int g = 0; g < 2; ++g) {
     const int t = gated_[g].track;
     model[g] = {tracks_[t].position(), H * tracks_[t].object.P * H.transpose(),
-                kScatter * association_extents_[t] + noise};
+                kUniformScatter * association_extents_[t] + noise};
   }
   const ExistenceSpec& e = spec_.existence;
   const double without[2] = {split_log_ratio(share[0], share[1], model[0], model[1], e),
@@ -185,13 +184,15 @@ bool ExtendedTracker::claim_by_confirmed(const std::vector<int>& group) {
     if (static_cast<int>(track_plots_[t].size()) >= min_plots) continue;
     int count = 0;
     for (int i : group) {
-      count += gate_distance(t, positions_[i], noises_[i], kScatter, nullptr) <= spec_.plot_gate;
+      count +=
+          gate_distance(t, positions_[i], noises_[i], kUniformScatter, nullptr) <= spec_.plot_gate;
     }
     if (count > best_count) best_count = count, best = t;
   }
   if (best < 0 || best_count < min_plots) return false;
   for (int i : group) {
-    if (gate_distance(best, positions_[i], noises_[i], kScatter, nullptr) <= spec_.plot_gate) {
+    if (gate_distance(best, positions_[i], noises_[i], kUniformScatter, nullptr) <=
+        spec_.plot_gate) {
       track_plots_[best].push_back(i);
     }
   }

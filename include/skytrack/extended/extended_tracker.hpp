@@ -25,6 +25,9 @@
 
 namespace skytrack::extended {
 
+/// Covariance of a point uniform over the ellipse E(0, X): X / 4.
+inline constexpr double kUniformScatter = 0.25;
+
 enum class ExtendedTrackStatus : std::uint8_t { kTentative, kConfirmed };
 
 struct ExtendedTrack {

@@ -1,0 +1,96 @@
+// The extended tracker's rules on the plots a track took in a scan, before its update:
+// lone plots beside its cluster, a second noise level for a manoeuvre, the plots taken as
+// clutter (see extended_tracker.hpp).
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+
+#include "skytrack/extended/extended_existence.hpp"
+#include "skytrack/extended/extended_tracker.hpp"
+
+namespace skytrack::extended {
+
+void ExtendedTracker::drop_lone_plots(int t) {
+  // An object seen gives a cluster of plots (a partition of at least min_partition_plots,
+  // as a new track needs). A plot alone in its partition is an outlying scatterer of that
+  // object only within the object's reach of its cluster; elsewhere, or in a scan without
+  // a cluster, it is clutter, which a gate widened by a coast holds in growing numbers:
+  // taken, a few lone plots turned a coasting track off its object, or swelled a returning
+  // object's scan into a count that read as clutter and deleted the track.
+  std::vector<int>& plots = track_plots_[t];
+  const int min_plots = std::max(1, spec_.min_partition_plots);
+  auto lone = [this, min_plots](int i) { return partition_sizes_[i] < min_plots; };
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+  int clustered = 0;
+  for (int i : plots) {
+    if (!lone(i)) mean += positions_[i], noise += noises_[i], ++clustered;
+  }
+  if (clustered == static_cast<int>(plots.size())) return;
+  if (clustered == 0) {
+    plots.clear();
+    return;
+  }
+  mean /= static_cast<double>(clustered);
+  noise /= static_cast<double>(clustered);
+  // The whole extent X, not the scatter X/4: the cluster may lie at one end of the object
+  // and the lone plot at the other, and X estimated on few plots may fall short of the
+  // object. (1 + 1/n): the cluster's mean of n plots scatters about the object's centre too.
+  const double spread = 1.0 + 1.0 / static_cast<double>(clustered);
+  const Eigen::LLT<Eigen::Matrix2d> llt(spread * (association_extents_[t] + noise));
+  std::erase_if(plots, [&](int i) {
+    if (!lone(i)) return false;
+    const Eigen::Vector2d d = positions_[i] - mean;
+    return llt.info() != Eigen::Success || !(d.dot(llt.solve(d)) <= spec_.plot_gate);
+  });
+}
+
+Eigen::Matrix2d ExtendedTracker::buffer_track_plots(int t) {
+  plot_buffer_.clear();
+  Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+  for (int i : track_plots_[t]) plot_buffer_.push_back(positions_[i]), noise += noises_[i];
+  return noise / static_cast<double>(track_plots_[t].size());
+}
+
+bool ExtendedTracker::predict_manoeuvre_if_likelier(int t) {
+  // Two noise levels, chosen by the plots' likelihood under each prediction (no threshold
+  // of its own): a quiet level keeps the gates of objects going straight tight against
+  // clutter and crossing neighbours, the manoeuvre level follows a turn the quiet one lags.
+  const MotionSpec& quiet = spec_.motion;
+  if (!(quiet.manoeuvre_accel > quiet.accel_noise) || !(scan_dt_ > 0.0)) return false;
+  ExtendedTrack& track = tracks_[t];
+  const Eigen::Matrix2d noise = buffer_track_plots(t);
+  const Eigen::Matrix2d spread = kUniformScatter * association_extents_[t] + noise;
+  const PosMat H = position_matrix();
+  auto log_f = [&](const ExtendedObject& o) {
+    return object_plots_log_density(plot_buffer_, o.position(), H * o.P * H.transpose(), spread);
+  };
+  MotionSpec manoeuvre = quiet;
+  manoeuvre.accel_noise = quiet.manoeuvre_accel;
+  ExtendedObject turning = priors_[t];
+  estimator_.predict(turning, scan_dt_, manoeuvre);
+  // Page's CUSUM at zero: the evidence for a manoeuvre over the scans since it last fell to
+  // zero, so a turn shown by several scans holds the manoeuvre level through a quiet-looking
+  // scan of few plots.
+  const double llr = log_f(turning) - log_f(track.object);
+  double& evidence = track.manoeuvre_evidence;
+  evidence = std::isfinite(llr) ? std::max(0.0, evidence + llr) : 0.0;  // no density: quiet
+  if (!(evidence > 0.0)) return false;
+  track.object = turning;
+  return true;
+}
+
+bool ExtendedTracker::clutter_likelier(int t) {
+  // The plots' joint density under the track (centre N(c, HPH'), each plot scattered by
+  // X/4 + R) against clutter of density lambda in a scan that missed the object.
+  if (!spec_.clutter_scan_test) return false;
+  const Eigen::Matrix2d noise = buffer_track_plots(t);
+  const PosMat H = position_matrix();
+  const ExtendedTrack& track = tracks_[t];
+  const Eigen::Matrix2d spread = kUniformScatter * association_extents_[t] + noise;
+  return object_plots_log_ratio(plot_buffer_, track.position(), H * track.object.P * H.transpose(),
+                                spread, spec_.existence) < 0.0;
+}
+
+}  // namespace skytrack::extended
