@@ -25,7 +25,9 @@ double squared_error(const Eigen::Vector3d& a, int dims_a, const Eigen::Vector3d
 }  // namespace
 
 ScenarioEvaluation::ScenarioEvaluation(ScenarioEvaluationConfig config)
-    : config_(config), calculator_(OspaGospaConfig{config.cutoff, config.order}) {}
+    : config_(config),
+      calculator_(OspaGospaConfig{config.cutoff, config.order}),
+      kept_(config.cutoff) {}
 
 const ScanRecord& ScenarioEvaluation::add(const TruthFrame& truth,
                                           const TrackFrame* tracks_or_null) {
@@ -70,6 +72,23 @@ const ScanRecord& ScenarioEvaluation::add(const TruthFrame& truth,
   for (std::size_t i = 0; i < objects.size(); ++i) {
     continuity_.observe(objects[i].id, matched_track_[i]);
   }
+  truth_ids_.resize(objects.size());
+  firm_ids_.resize(firm_.size());
+  distances_.resize(static_cast<Eigen::Index>(objects.size()),
+                    static_cast<Eigen::Index>(firm_.size()));
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    truth_ids_[i] = objects[i].id;
+    for (std::size_t k = 0; k < firm_.size(); ++k) {
+      const TrackReport& track = tracks[firm_[k]];
+      distances_(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = std::sqrt(
+          squared_error(objects[i].position, objects[i].dims, track.position, track.dims));
+    }
+  }
+  for (std::size_t k = 0; k < firm_.size(); ++k) firm_ids_[k] = tracks[firm_[k]].id;
+  kept_.match(truth_ids_, firm_ids_, distances_, kept_track_);
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    kept_continuity_.observe(objects[i].id, kept_track_[i]);
+  }
 
   record_ = ScanRecord{truth.time,
                        result.ospa,
@@ -105,6 +124,8 @@ EvaluationSummary ScenarioEvaluation::summary() const {
   s.id_changes = continuity_.id_changes();
   s.fragmentations = continuity_.fragmentations();
   s.continuity = continuity_.per_truth();
+  s.kept_id_changes = kept_continuity_.id_changes();
+  s.kept_fragmentations = kept_continuity_.fragmentations();
   s.gwd_pairs = gwd_pairs_;
   s.gwd_mean = gwd_pairs_ > 0 ? sum_gwd_ / static_cast<double>(gwd_pairs_) : kNaN;
   return s;

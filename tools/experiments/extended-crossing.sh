@@ -16,9 +16,11 @@
 #                   (default out/experiments/extended-crossing; out/ is git-ignored)
 # Columns: position and velocity RMSE and the mean GWD of the extents over matched
 # track-truth pairs (eval's rmse_position, rmse_velocity, gwd_mean), number changes (eval's
-# id_changes: the track on a truth object changed number) and fragmentations summed over the
-# seeds, false tracks per scan (eval's gospa_false_mean), ms per scan (`skytrack track`'s
-# "per batch: mean", CPU of the whole pipeline).
+# id_changes: the track on a truth object changed number, over each scan's GOSPA pairs; and
+# kept_id_changes, over CLEAR MOT's kept correspondence, where two objects overlapping in
+# the crossing are not a change) and fragmentations summed over the seeds, false tracks per
+# scan (eval's gospa_false_mean), ms per scan (`skytrack track`'s "per batch: mean", CPU of
+# the whole pipeline).
 set -euo pipefail
 
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -31,7 +33,7 @@ while [ $# -gt 0 ]; do
     --seeds) seeds=$2; shift 2 ;;
     --first-seed) first=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
-    -h | --help) sed -n '2,21p' "$0"; exit 0 ;;
+    -h | --help) sed -n '2,23p' "$0"; exit 0 ;;
     *) echo "unknown argument: $1" >&2; exit 2 ;;
   esac
 done
@@ -71,6 +73,7 @@ for seed in $(seq "$first" $((first + seeds - 1))); do
     echo "$seed $(json_number rmse_position "$j") $(json_number rmse_velocity "$j")" \
       "$(json_number gwd_mean "$j") $(json_number id_changes "$j")" \
       "$(json_number fragmentations "$j") $(json_number gospa_false_mean "$j") $ms" \
+      "$(json_number kept_id_changes "$j")" \
       >>"$out/$estimator.scores"
   done
 done
@@ -79,14 +82,14 @@ echo
 echo "config/scenarios/extended_crossing.yaml, config/profiles/extended.yaml, seeds $first-$((first + seeds - 1));"
 echo "\`skytrack eval --cutoff 200\`: means over the seeds, number changes and fragmentations summed."
 echo
-echo "| estimator | position RMSE [m] | velocity RMSE [m/s] | GWD [m] | number changes | fragmentations | false tracks per scan | ms per scan |"
-echo "|---|---|---|---|---|---|---|---|"
+echo "| estimator | position RMSE [m] | velocity RMSE [m/s] | GWD [m] | number changes | number changes, kept correspondence | fragmentations | false tracks per scan | ms per scan |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for estimator in "${estimators[@]}"; do
   awk -v name="$estimator" '
-    { p += $2; v += $3; g += $4; c += $5; f += $6; x += $7; ms += $8; k++ }
+    { p += $2; v += $3; g += $4; c += $5; f += $6; x += $7; ms += $8; kc += $9; k++ }
     END {
-      printf "| %s | %.1f | %.2f | %.1f | %d | %d | %.3f | %.3f |\n", name, p / k, v / k, g / k, c,
-        f, x / k, ms / k
+      printf "| %s | %.1f | %.2f | %.1f | %d | %d | %d | %.3f | %.3f |\n", name, p / k, v / k, g / k,
+        c, kc, f, x / k, ms / k
     }' "$out/$estimator.scores"
 done
 echo

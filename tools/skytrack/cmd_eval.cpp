@@ -184,16 +184,17 @@ std::string summary_json(const metrics::EvaluationSummary& s, const EvalOptions&
       "{{\"gospa_mean\": {}, \"ospa_mean\": {}, \"gospa_localisation_mean\": {}, "
       "\"gospa_missed_mean\": {}, \"gospa_false_mean\": {}, \"rmse_position\": {}, "
       "\"rmse_velocity\": {}, \"matched_pairs\": {}, \"id_changes\": {}, "
-      "\"fragmentations\": {}, \"gwd_mean\": {}, \"gwd_pairs\": {}, \"scans\": {}, "
+      "\"fragmentations\": {}, \"kept_id_changes\": {}, \"kept_fragmentations\": {}, "
+      "\"gwd_mean\": {}, \"gwd_pairs\": {}, \"scans\": {}, "
       "\"cutoff\": {}, \"order\": {}, \"truth_lines_rejected\": {}, "
       "\"track_lines_rejected\": {}, \"track_frames\": {}, \"track_frames_without_truth\": {}, "
       "\"continuity\": [",
       json_number(s.gospa_mean), json_number(s.ospa_mean), json_number(s.gospa_localisation_mean),
       json_number(s.gospa_missed_mean), json_number(s.gospa_false_mean),
       json_number(s.rmse_position), json_number(s.rmse_velocity), s.matched_pairs, s.id_changes,
-      s.fragmentations, json_number(s.gwd_mean), s.gwd_pairs, s.scans, json_number(o.cutoff),
-      json_number(o.order), c.truth_rejected, c.track_rejected, c.track_frames,
-      c.track_frames_without_truth);
+      s.fragmentations, s.kept_id_changes, s.kept_fragmentations, json_number(s.gwd_mean),
+      s.gwd_pairs, s.scans, json_number(o.cutoff), json_number(o.order), c.truth_rejected,
+      c.track_rejected, c.track_frames, c.track_frames_without_truth);
   for (std::size_t i = 0; i < s.continuity.size(); ++i) {
     const metrics::TruthContinuity& t = s.continuity[i];
     json += fmt::format(
@@ -225,6 +226,8 @@ void print_table(const metrics::EvaluationSummary& s, const EvalOptions& o, cons
              s.gwd_pairs);
   fmt::print("  {:<26}{}\n", "id changes", s.id_changes);
   fmt::print("  {:<26}{}\n", "fragmentations", s.fragmentations);
+  fmt::print("  {:<26}{} (fragmentations {})\n", "id changes, kept (MOT)", s.kept_id_changes,
+             s.kept_fragmentations);
   fmt::print("  {:<26}truth {}, tracks {}\n", "rejected lines", c.truth_rejected, c.track_rejected);
   if (s.continuity.empty() || s.continuity.size() > 50) return;
   fmt::print("\n  {:>8} {:>9} {:>9} {:>11} {:>15} {:>7}\n", "truth", "present", "tracked",

@@ -1,7 +1,8 @@
 #pragma once
 // Scores a tracker run against ground truth one truth frame at a time, so a long run is
 // never held whole: per scan OSPA / GOSPA (ospa_gospa.hpp) with the GOSPA split, and over
-// the run means, RMSE over matched pairs, track continuity (track_continuity.hpp) and the
+// the run means, RMSE over matched pairs, track continuity (track_continuity.hpp; over the
+// GOSPA pairs and over CLEAR MOT's kept correspondence, kept_correspondence.hpp) and the
 // Gaussian Wasserstein distance of extents (gaussian_wasserstein.hpp).
 //
 // Only confirmed and coasting tracks are scored (is_reported_as_firm). Positions and
@@ -21,6 +22,7 @@
 
 #include "skytrack/core/track_report.hpp"
 #include "skytrack/core/truth.hpp"
+#include "skytrack/metrics/kept_correspondence.hpp"
 #include "skytrack/metrics/ospa_gospa.hpp"
 #include "skytrack/metrics/track_continuity.hpp"
 
@@ -56,6 +58,10 @@ struct EvaluationSummary {
   int id_changes = 0;
   int fragmentations = 0;
   std::vector<TruthContinuity> continuity;  // ordered by truth id
+  // The same over CLEAR MOT's kept correspondence (kept_correspondence.hpp): a number
+  // change only where another track takes an object over.
+  int kept_id_changes = 0;
+  int kept_fragmentations = 0;
   double gwd_mean = 0.0;  // [m] mean GW distance over matched pairs with extents; NaN if none
   std::size_t gwd_pairs = 0;
 };
@@ -81,10 +87,15 @@ class ScenarioEvaluation {
   ScenarioEvaluationConfig config_;
   OspaGospa calculator_;
   TrackContinuity continuity_;
+  KeptCorrespondence kept_;
+  TrackContinuity kept_continuity_;
   ScanRecord record_;
   std::vector<Eigen::VectorXd> truth_positions_, track_positions_;  // reused workspaces
   std::vector<int> firm_;
   std::vector<std::optional<std::int64_t>> matched_track_;  // per truth object
+  std::vector<std::optional<std::int64_t>> kept_track_;     // per truth object
+  std::vector<std::int64_t> truth_ids_, firm_ids_;
+  Eigen::MatrixXd distances_;  // truths x firm tracks [m]
 
   // Running sums over all scans.
   std::size_t scans_ = 0;
