@@ -303,9 +303,14 @@ void ExtendedTracker::manage(ExtendedScanReport& report) {
     if (track.plots > 0) {
       ++track.hits;
       track.misses = 0;
-      // With existence, not while it is below the deletion threshold: plot pairs a large
-      // young gate would hold as clutter do not confirm a track only to delete it.
-      const bool likely = !e.enabled || track.existence() >= e.delete_below;
+      // With existence, only once one missed scan would not delete it: plot pairs a large
+      // young gate would hold as clutter do not confirm a track only to delete it, and a
+      // young object's track is not numbered on the scan it clears the deletion threshold,
+      // to be dropped and renumbered after its next miss.
+      const bool likely =
+          !e.enabled || existence_probability(existence_miss(existence_predict(log_odds, e),
+                                                             std::max(1, spec_.min_partition_plots),
+                                                             e)) >= e.delete_below;
       if (track.status == ExtendedTrackStatus::kTentative && track.hits >= spec_.confirm_hits &&
           likely) {
         track.status = ExtendedTrackStatus::kConfirmed;

@@ -1,6 +1,7 @@
 // ExtendedTracker's deletion of a confirmed track by its existence probability
 // (ExtendedSpec::existence): a well-seen object coasts through a fade, a track of plot pairs
 // (clutter) goes sooner.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -95,6 +96,45 @@ TEST(ExtendedTrackLife, PlotPairsAreNotConfirmedAsAnObject) {
   ExtendedSpec counts;
   counts.existence.enabled = false;
   EXPECT_EQ(confirmed_after(counts), 3);
+}
+
+TEST(ExtendedTrackLife, AConfirmedTrackSurvivesItsNextMissedScan) {
+  // GIVEN objects seen with few plots (2 to 4 a scan over 50 m x 20 m), whose existence
+  // climbs slowly, in 40 runs
+  int confirmed_runs = 0;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    ExtendedTracker tracker{ExtendedSpec{}};
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::uniform_int_distribution<int> count(2, 4);
+    std::normal_distribution<double> noise(0.0, 5.0);
+    std::vector<Eigen::Vector2d> plots;
+    std::uint64_t confirmed = 0;
+    double t = 0.0;
+    for (int k = 0; k < 12 && confirmed == 0; ++k, t += 10.0) {
+      plots.clear();
+      for (int i = count(rng); i > 0; --i) {
+        const double r = std::sqrt(u(rng)), phi = 2.0 * std::numbers::pi * u(rng);
+        plots.push_back(Eigen::Vector2d(10.0 * t + 50.0 * r * std::cos(phi) + noise(rng),
+                                        20.0 * r * std::sin(phi) + noise(rng)));
+      }
+      const std::vector<Eigen::Matrix2d> noises(plots.size(), Eigen::Matrix2d::Identity() * 25.0);
+      tracker.process(t, plots, noises);
+      for (const ExtendedTrack& track : tracker.tracks()) {
+        if (track.status == ExtendedTrackStatus::kConfirmed) confirmed = track.id;
+      }
+    }
+    if (confirmed == 0) continue;
+    ++confirmed_runs;
+    // WHEN the scan after its confirmation misses the object
+    tracker.process(t, std::vector<Eigen::Vector2d>{}, std::vector<Eigen::Matrix2d>{});
+    // THEN its track is still there: a track is numbered only once a miss would not delete it
+    const auto tracks = tracker.tracks();
+    EXPECT_TRUE(std::any_of(tracks.begin(), tracks.end(),
+                            [&](const ExtendedTrack& x) { return x.id == confirmed; }))
+        << "seed " << seed;
+  }
+  EXPECT_GE(confirmed_runs, 30);
 }
 
 }  // namespace
