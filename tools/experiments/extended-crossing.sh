@@ -95,5 +95,6 @@ done
 echo
 for estimator in "${estimators[@]}"; do
   changed=$(awk '$5 > 0 { printf "%s%s (%d)", sep, $1, $5; sep = ", " }' "$out/$estimator.scores")
-  echo "$estimator: seeds with number changes: ${changed:-none}"
+  kept=$(awk '$9 > 0 { printf "%s%s (%d)", sep, $1, $9; sep = ", " }' "$out/$estimator.scores")
+  echo "$estimator: seeds with number changes: ${changed:-none}; kept correspondence: ${kept:-none}"
 done
