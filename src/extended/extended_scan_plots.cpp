@@ -3,6 +3,7 @@
 // clutter (see extended_tracker.hpp).
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/Cholesky>
 
@@ -53,14 +54,13 @@ Eigen::Matrix2d ExtendedTracker::buffer_track_plots(int t) {
   return noise / static_cast<double>(track_plots_[t].size());
 }
 
-bool ExtendedTracker::predict_manoeuvre_if_likelier(int t) {
+bool ExtendedTracker::predict_manoeuvre_if_likelier(int t, const Eigen::Matrix2d& noise) {
   // Two noise levels, chosen by the plots' likelihood under each prediction (no threshold
   // of its own): a quiet level keeps the gates of objects going straight tight against
   // clutter and crossing neighbours, the manoeuvre level follows a turn the quiet one lags.
   const MotionSpec& quiet = spec_.motion;
   if (!(quiet.manoeuvre_accel > quiet.accel_noise) || !(scan_dt_ > 0.0)) return false;
   ExtendedTrack& track = tracks_[t];
-  const Eigen::Matrix2d noise = buffer_track_plots(t);
   const Eigen::Matrix2d spread = kUniformScatter * association_extents_[t] + noise;
   const PosMat H = position_matrix();
   auto log_f = [&](const ExtendedObject& o) {
@@ -68,24 +68,23 @@ bool ExtendedTracker::predict_manoeuvre_if_likelier(int t) {
   };
   MotionSpec manoeuvre = quiet;
   manoeuvre.accel_noise = quiet.manoeuvre_accel;
-  ExtendedObject turning = priors_[t];
-  estimator_.predict(turning, scan_dt_, manoeuvre);
+  turning_ = priors_[t];
+  estimator_.predict(turning_, scan_dt_, manoeuvre);
   // Page's CUSUM at zero: the evidence for a manoeuvre over the scans since it last fell to
   // zero, so a turn shown by several scans holds the manoeuvre level through a quiet-looking
   // scan of few plots.
-  const double llr = log_f(turning) - log_f(track.object);
+  const double llr = log_f(turning_) - log_f(track.object);
   double& evidence = track.manoeuvre_evidence;
   evidence = std::isfinite(llr) ? std::max(0.0, evidence + llr) : 0.0;  // no density: quiet
   if (!(evidence > 0.0)) return false;
-  track.object = turning;
+  std::swap(track.object, turning_);  // turning_ keeps the quiet prediction
   return true;
 }
 
-bool ExtendedTracker::clutter_likelier(int t) {
+bool ExtendedTracker::clutter_likelier(int t, const Eigen::Matrix2d& noise) {
   // The plots' joint density under the track (centre N(c, HPH'), each plot scattered by
   // X/4 + R) against clutter of density lambda in a scan that missed the object.
   if (!spec_.clutter_scan_test) return false;
-  const Eigen::Matrix2d noise = buffer_track_plots(t);
   const PosMat H = position_matrix();
   const ExtendedTrack& track = tracks_[t];
   const Eigen::Matrix2d spread = kUniformScatter * association_extents_[t] + noise;

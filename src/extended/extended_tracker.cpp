@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include <Eigen/Cholesky>
 
@@ -193,12 +194,11 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     // Fewer plots than start a track are taken as clutter in a scan the object was missed:
     // one stray plot would drag the centre, velocity and extent off the object.
     const bool enough = static_cast<int>(plots.size()) >= std::max(1, spec_.min_partition_plots);
-    const bool turned = enough && predict_manoeuvre_if_likelier(t);
-    if (!enough || clutter_likelier(t)) {
-      if (turned) {  // taken as clutter: the object is unseen, nothing shows a manoeuvre
-        track.object = priors_[t];
-        estimator_.predict(track.object, scan_dt_);
-      }
+    const Eigen::Matrix2d noise = enough ? buffer_track_plots(t) : Eigen::Matrix2d::Zero();
+    const bool turned = enough && predict_manoeuvre_if_likelier(t, noise);
+    if (!enough || clutter_likelier(t, noise)) {
+      // Taken as clutter: the object is unseen, nothing shows a manoeuvre.
+      if (turned) std::swap(track.object, turning_);
       // Unseen: coast at constant velocity (the acceleration estimated before is no evidence
       // that the object keeps accelerating; extrapolated it carries the coast off).
       if (spec_.coast_constant_velocity && scan_dt_ > 0.0) {
@@ -207,7 +207,6 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
       }
       continue;
     }
-    const Eigen::Matrix2d noise = buffer_track_plots(t);
     // The plot gate's area before the update, where clutter could have come from.
     const PosMat H = position_matrix();
     const Eigen::Matrix2d G =

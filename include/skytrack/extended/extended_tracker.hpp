@@ -99,9 +99,12 @@ class ExtendedTracker {
   void one_object_only(const std::vector<int>& group);  // a split where one object is all
   bool claim_by_confirmed(const std::vector<int>& group);
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
-  void drop_lone_plots(int t);   // lone plots away from the track's cluster of this scan
-  bool clutter_likelier(int t);  // the track's plots of this scan likelier clutter
-  bool predict_manoeuvre_if_likelier(int t);  // true: predicted again with manoeuvre_accel
+  void drop_lone_plots(int t);  // lone plots away from the track's cluster of this scan
+  // The next two read the track's plots of this scan from plot_buffer_ (buffer_track_plots)
+  // with their mean noise.
+  bool clutter_likelier(int t, const Eigen::Matrix2d& noise);  // likelier clutter
+  // True: predicted again with manoeuvre_accel (turning_ then holds the quiet prediction).
+  bool predict_manoeuvre_if_likelier(int t, const Eigen::Matrix2d& noise);
   Eigen::Matrix2d buffer_track_plots(int t);  // into plot_buffer_; returns their mean noise
   void two_point_velocity(ExtendedTrack& track) const noexcept;
   void manage(ExtendedScanReport& report);
@@ -123,8 +126,10 @@ class ExtendedTracker {
   std::vector<Gated> gated_;
   std::vector<Eigen::Matrix2d> association_extents_;  // per track, this scan
   std::vector<char> was_unresolved_;                  // per track, the last scan's flag
-  std::vector<ExtendedObject> priors_;                // per track, the object before predict
-  std::vector<Eigen::Vector2d> split_centre_;         // per gating track, its centre in the split
+  std::vector<ExtendedObject> priors_;
+  ExtendedObject turning_;  // workspace of predict_manoeuvre_if_likelier                // per
+                            // track, the object before predict
+  std::vector<Eigen::Vector2d> split_centre_;  // per gating track, its centre in the split
   std::vector<Eigen::Matrix2d> split_cov_;
   std::vector<int> split_owner_;  // per plot of the partition, its index into gated_
   std::vector<const std::vector<int>*> unassigned_;
