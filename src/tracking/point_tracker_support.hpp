@@ -29,6 +29,16 @@ inline constexpr int kLifeSpreadDims = 2;
 
 /// sqrt of the largest eigenvalue of the position block [m].
 inline double position_spread(const Gaussian& g, int dims) {
+  if (dims <= 2) {
+    // The larger root of the 2x2 characteristic polynomial: no trigonometry (the 3x3 closed
+    // form takes an atan2 and a sincos), called per mode of every track in every look.
+    const double a = g.covariance(0, 0);
+    const double d = dims == 2 ? g.covariance(2, 2) : 0.0;
+    const double b = dims == 2 ? g.covariance(0, 2) : 0.0;
+    const double h = 0.5 * (a - d);
+    const double largest = 0.5 * (a + d) + std::sqrt(h * h + b * b);
+    return std::sqrt(std::max(0.0, largest));
+  }
   Eigen::Matrix3d pos = Eigen::Matrix3d::Zero();
   for (int a = 0; a < dims; ++a) {
     for (int b = 0; b < dims; ++b) pos(a, b) = g.covariance(2 * a, 2 * b);
