@@ -40,18 +40,39 @@ std::size_t slot_of(std::uint64_t key, std::size_t mask) {
 JpdaExactOutcome JpdaExact::compute(const Eigen::Ref<const Eigen::MatrixXd>& weights,
                                     std::int64_t max_states,
                                     Eigen::Ref<Eigen::MatrixXd> beta) noexcept {
+  plan(weights);
+  return run(weights, max_states, beta);
+}
+
+void JpdaExact::plan(const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                     std::span<const std::int64_t> unused_events) noexcept {
   tracks_ = static_cast<int>(weights.rows());
   columns_ = static_cast<int>(weights.cols());
-  if (tracks_ == 1) return one_track(weights, max_states, beta);
-  JpdaExactOutcome outcome;
+  unused_events_.assign(unused_events.begin(), unused_events.end());
+  planned_ok_ = true;
+  planned_states_ = 2.0;
+  if (tracks_ == 1) return;
   classify_plots(weights);
   order_tracks();
+  planned_ok_ = assign_key_bits();
+  if (!planned_ok_) {
+    planned_states_ = std::numeric_limits<double>::infinity();
+    return;
+  }
+  build_steps(weights);
+  plan_states();
+}
+
+JpdaExactOutcome JpdaExact::run(const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                                std::int64_t max_states,
+                                Eigen::Ref<Eigen::MatrixXd> beta) noexcept {
+  if (tracks_ == 1) return one_track(weights, max_states, beta);
+  JpdaExactOutcome outcome;
   outcome.shared_plots = static_cast<int>(shared_column_.size());
-  if (!assign_key_bits()) {
+  if (!planned_ok_) {
     outcome.key_bits = kMaxKeyBits + 1;
     return outcome;
   }
-  build_steps(weights);
   outcome.key_bits = key_bits_;
   outcome.max_frontier = max_frontier_;
   if (must_stop(max_states)) return outcome;
@@ -68,23 +89,44 @@ JpdaExactOutcome JpdaExact::compute(const Eigen::Ref<const Eigen::MatrixXd>& wei
   return outcome;
 }
 
+std::int64_t JpdaExact::unused(int column) const noexcept {
+  return unused_events_.empty() ? 1 : unused_events_[at(column - 1)];
+}
+
+// A row's private plots (gated by it alone), each standing for unused(c) events when not
+// taken: its stay edge stands for [miss] prod_c u_c + sum_c prod_{c' != c} u_c' events, a
+// shared edge for prod_c u_c. With every u_c = 1: [miss] + (private plots) and 1.
+void JpdaExact::count_private(const Eigen::Ref<const Eigen::MatrixXd>& weights, int t,
+                              Step& step) noexcept {
+  std::int64_t all = 1, one_taken = 0;
+  for (int c = 1; c < columns_; ++c) {
+    const double w = weights(t, c);
+    if (!(w > 0.0) || (tracks_ > 1 && column_shared_[at(c)] != 0)) continue;
+    step.stay += w;
+    one_taken = saturating_add(saturating_mul(one_taken, unused(c)), all);
+    all = saturating_mul(all, unused(c));
+  }
+  step.stay_events = saturating_add(weights(t, 0) > 0.0 ? all : 0, one_taken);
+  step.edge_events = all;
+}
+
 JpdaExactOutcome JpdaExact::one_track(const Eigen::Ref<const Eigen::MatrixXd>& weights,
                                       std::int64_t max_states,
                                       Eigen::Ref<Eigen::MatrixXd> beta) noexcept {
   JpdaExactOutcome outcome;
-  double stay = weights(0, 0);
-  std::int64_t events = stay > 0.0 ? 1 : 0;
-  for (int c = 1; c < columns_; ++c) {
-    if (weights(0, c) > 0.0) {
-      stay += weights(0, c);
-      ++events;
-    }
-  }
+  Step step;
+  step.stay = weights(0, 0);
+  count_private(weights, 0, step);
+  const double stay = step.stay;
   // The root and, when any event has weight, the terminal state.
   outcome.states = stay > 0.0 ? 2 : 1;
   if (outcome.states > max_states) return outcome;
   outcome.completed = true;
   if (!(stay > 0.0)) return outcome;
+  std::int64_t events = step.stay_events;
+  for (int c = 1; c < columns_; ++c) {
+    if (!(weights(0, c) > 0.0)) events = saturating_mul(events, unused(c));
+  }
   outcome.events = events;
   outcome.total_weight = stay;
   beta.setZero();
@@ -233,29 +275,46 @@ bool JpdaExact::assign_key_bits() noexcept {
 void JpdaExact::build_steps(const Eigen::Ref<const Eigen::MatrixXd>& weights) noexcept {
   steps_.clear();
   edges_.clear();
+  leaving_.clear();
   max_frontier_ = 0;
+  root_events_ = 1;
+  for (int c = 1; c < columns_; ++c) {  // plots no track gates
+    bool gated = false;
+    for (int t = 0; t < tracks_ && !gated; ++t) gated = weights(t, c) > 0.0;
+    if (!gated) root_events_ = saturating_mul(root_events_, unused(c));
+  }
   for (int k = 0; k < tracks_; ++k) {
     const int t = order_[at(k)];
     Step step;
     step.track = t;
     step.stay = weights(t, 0);
-    step.stay_events = step.stay > 0.0 ? 1 : 0;
-    for (int c = 1; c < columns_; ++c) {  // private plots: the key does not change
-      const double w = weights(t, c);
-      if (w > 0.0 && column_shared_[at(c)] == 0) {
-        step.stay += w;
-        ++step.stay_events;
-      }
-    }
+    count_private(weights, t, step);  // private plots: the key does not change
     step.edge_begin = static_cast<int>(edges_.size());
+    step.leave_begin = static_cast<int>(leaving_.size());
     for (int i = track_begin_[at(t)]; i < track_begin_[at(t + 1)]; ++i) {
       const int p = track_shared_[at(i)];
       const int c = shared_column_[at(p)];
-      edges_.push_back({std::uint64_t{1} << slot_[at(p)], c, weights(t, c)});
+      const std::uint64_t bit = std::uint64_t{1} << slot_[at(p)];
+      edges_.push_back({bit, c, weights(t, c)});
+      if (last_[at(p)] == k && unused(c) != 1) leaving_.push_back({bit, unused(c)});
     }
     step.edge_count = static_cast<int>(edges_.size()) - step.edge_begin;
+    step.leave_count = static_cast<int>(leaving_.size()) - step.leave_begin;
     steps_.push_back(step);
     max_frontier_ = std::max(max_frontier_, std::popcount(keep_[at(k)]));
+  }
+}
+
+void JpdaExact::plan_states() noexcept {
+  planned_states_ = 1.0;
+  for (int k = 0; k < tracks_; ++k) {
+    const int live = std::popcount(keep_[at(k)]);
+    double subsets = 0.0, choose = 1.0;  // sum_{i <= min(k + 1, live)} C(live, i)
+    for (int i = 0; i <= std::min(k + 1, live); ++i) {
+      subsets += choose;
+      choose = choose * (live - i) / (i + 1);
+    }
+    planned_states_ += subsets;
   }
 }
 
@@ -308,7 +367,7 @@ bool JpdaExact::forward(std::int64_t max_states) noexcept {
   start_level();
   const int root = find_or_insert(0);
   f_[at(root)] = 1.0;
-  events_[at(root)] = 1;
+  events_[at(root)] = root_events_;
   for (int k = 0; k < tracks_; ++k) {
     const int end = static_cast<int>(keys_.size());
     level_begin_[at(k + 1)] = end;
@@ -324,17 +383,26 @@ bool JpdaExact::forward(std::int64_t max_states) noexcept {
 }
 
 // Successors of one state of level k: the stay edge, then one per shared plot (-1 = none).
+// A shared plot this track is the last to gate leaves the key: untaken, it stands for its
+// unused events.
 void JpdaExact::expand(int k, int s) noexcept {
   const Step& step = steps_[at(k)];
   const std::uint64_t used = keys_[at(s)];
   const std::uint64_t keep = keep_[at(k)];
   const double f = f_[at(s)];
   const std::int64_t events = events_[at(s)];
+  const auto left_unused = [&](std::uint64_t taken, std::int64_t n) {
+    for (int i = step.leave_begin; i < step.leave_begin + step.leave_count; ++i) {
+      if ((taken & leaving_[at(i)].bit) == 0) n = saturating_mul(n, leaving_[at(i)].events);
+    }
+    return n;
+  };
   int next = -1;
   if (step.stay > 0.0) {
     next = find_or_insert(used & keep);
     f_[at(next)] += f * step.stay;
-    events_[at(next)] = saturating_add(events_[at(next)], saturating_mul(events, step.stay_events));
+    events_[at(next)] = saturating_add(events_[at(next)],
+                                       left_unused(used, saturating_mul(events, step.stay_events)));
   }
   succ_.push_back(next);
   for (int e = step.edge_begin; e < step.edge_begin + step.edge_count; ++e) {
@@ -343,7 +411,9 @@ void JpdaExact::expand(int k, int s) noexcept {
     if ((used & edge.bit) == 0) {
       next = find_or_insert((used | edge.bit) & keep);
       f_[at(next)] += f * edge.weight;
-      events_[at(next)] = saturating_add(events_[at(next)], events);
+      events_[at(next)] =
+          saturating_add(events_[at(next)],
+                         left_unused(used | edge.bit, saturating_mul(events, step.edge_events)));
     }
     succ_.push_back(next);
   }

@@ -53,7 +53,17 @@ bool JpdaSolver::prepare(const JpdaProblem& problem) noexcept {
 
 bool JpdaSolver::run_exact() noexcept {
   const Eigen::Map<const Eigen::MatrixXd> w(weights_.data(), tracks_, plots_ + 1);
-  exact_outcome_ = exact_.compute(w, options_.max_exact_states, result_.beta);
+  exact_.plan(w);
+  // Below this bound on the states, planning the other order costs more than it can save.
+  constexpr double kWorthTransposing = 1024.0;
+  const bool transposable = exact_.planned_states() > kWorthTransposing && by_plots_.plan(w);
+  const bool by_plots = transposable && by_plots_.planned_states() < exact_.planned_states();
+  const auto run = [&](bool over_plots) {
+    exact_outcome_ = over_plots ? by_plots_.run(w, options_.max_exact_states, result_.beta)
+                                : exact_.run(w, options_.max_exact_states, result_.beta);
+  };
+  run(by_plots);
+  if (!exact_outcome_.completed && transposable) run(!by_plots);  // the bound is not the count
   if (!exact_outcome_.completed) return false;
   result_.approximated = false;
   result_.hypotheses = exact_outcome_.events;

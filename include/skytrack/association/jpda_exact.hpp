@@ -32,6 +32,7 @@
 //
 // Buffers are kept between calls: after warm-up on the largest cluster, no allocation.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -58,18 +59,38 @@ class JpdaExact {
   JpdaExactOutcome compute(const Eigen::Ref<const Eigen::MatrixXd>& weights,
                            std::int64_t max_states, Eigen::Ref<Eigen::MatrixXd> beta) noexcept;
 
+  /// compute() in two parts. plan() classifies the plots, orders the tracks and colours the
+  /// key bits; run() makes the states and the marginals of the same `weights`. Between them
+  /// planned_states() bounds what the run can make. `unused_events`, one per plot column
+  /// (weights column 1 + j), is the number of joint events a plot stands for when no track
+  /// takes it (empty: 1 each); it changes only the events count (JpdaByPlots uses it).
+  void plan(const Eigen::Ref<const Eigen::MatrixXd>& weights,
+            std::span<const std::int64_t> unused_events = {}) noexcept;
+  JpdaExactOutcome run(const Eigen::Ref<const Eigen::MatrixXd>& weights, std::int64_t max_states,
+                       Eigen::Ref<Eigen::MatrixXd> beta) noexcept;
+  /// An upper bound on the states of the planned run: level k + 1 holds at most the subsets of
+  /// |F_k| live bits with at most k + 1 members (+infinity when the key does not fit).
+  double planned_states() const noexcept { return planned_states_; }
+
  private:
   struct Step {  // one track, in processing order
     int track = 0;
     double stay = 0.0;             // miss + private plot weights (key unchanged)
-    std::int64_t stay_events = 0;  // how many of those are non-zero
-    int edge_begin = 0;            // its shared plots in edges_
+    std::int64_t stay_events = 0;  // the joint events those stand for
+    std::int64_t edge_events = 1;  // the events a shared edge stands for (private plots unused)
+    int leave_begin = 0;           // shared plots whose last track this is, in leaving_
+    int leave_count = 0;
+    int edge_begin = 0;  // its shared plots in edges_
     int edge_count = 0;
   };
   struct Edge {
     std::uint64_t bit = 0;
     int column = 0;  // column in weights (1 + plot)
     double weight = 0.0;
+  };
+  struct Leaving {  // a shared plot no later track gates, standing for `events` if unused
+    std::uint64_t bit = 0;
+    std::int64_t events = 1;
   };
   struct Slot {
     std::uint64_t key = 0;
@@ -96,6 +117,10 @@ class JpdaExact {
   void start_level() noexcept;
   int find_or_insert(std::uint64_t key) noexcept;
   void grow_table() noexcept;
+  std::int64_t unused(int column) const noexcept;  // unused_events of a weights column
+  /// The events a row's stay edge and its shared edges stand for, from its private plots.
+  void count_private(const Eigen::Ref<const Eigen::MatrixXd>& weights, int t, Step& step) noexcept;
+  void plan_states() noexcept;
 
   int tracks_ = 0;
   int columns_ = 0;
@@ -113,6 +138,11 @@ class JpdaExact {
   std::vector<std::uint64_t> keep_;       // key bits still live after the k-th track
   std::vector<Step> steps_;
   std::vector<Edge> edges_;
+  std::vector<std::int64_t> unused_events_;  // per plot column; empty: 1 each
+  std::vector<Leaving> leaving_;
+  std::int64_t root_events_ = 1;  // the plots no track gates, unused in every event
+  bool planned_ok_ = false;       // the key fits (at most 64 live plots)
+  double planned_states_ = 0.0;
   std::vector<int> level_begin_;  // states of level k: [begin_k, begin_{k+1})
   std::vector<int> succ_begin_;   // successors of level k start here in succ_
   std::vector<std::uint64_t> keys_;

@@ -4,7 +4,9 @@
 // in jpda_problem.hpp.
 //
 // EXACT: JpdaExact, a dynamic programme over (track, used shared plots) that sums every
-// feasible joint event without listing them (complexity in jpda_exact.hpp).
+// feasible joint event without listing them (complexity in jpda_exact.hpp), or the same
+// programme over (shared plot, used tracks) (JpdaByPlots), whichever order's bound on the
+// states is smaller; if that one stops at max_exact_states, the other is tried.
 // APPROXIMATION, above max_exact_tracks tracks, > 64 shared plots live at once or
 // max_exact_states states: the k best joint events by Murty's method (MurtyKBest) on the tracks x
 // (plots + tracks) matrix
@@ -21,6 +23,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "skytrack/association/jpda_by_plots.hpp"
 #include "skytrack/association/jpda_exact.hpp"
 #include "skytrack/association/jpda_problem.hpp"
 #include "skytrack/association/murty_k_best.hpp"
@@ -60,6 +63,7 @@ class JpdaSolver {
 
   JpdaOptions options_;
   JpdaExact exact_;
+  JpdaByPlots by_plots_;  // the same programme over the plots, where that order is cheaper
   JpdaExactOutcome exact_outcome_;
   MurtyKBest murty_;
   std::vector<double> weights_;  // tracks x (1 + plots), column 0 = miss, rows scaled to max 1
