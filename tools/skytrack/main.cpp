@@ -3,9 +3,11 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "skytrack/daemon/memory_policy.hpp"
 #include "skytrack/daemon/tsan_suppressions.hpp"
 
 int main(int argc, char** argv) {
+  skytrack::daemon::apply_memory_policy();
   CLI::App app{"skytrack - radar track processing: simulate, track and evaluate"};
   app.require_subcommand(1);
   int exit_code = 0;

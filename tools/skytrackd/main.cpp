@@ -14,6 +14,7 @@
 #include "skytrack/daemon/daemon_config.hpp"
 #include "skytrack/daemon/fusion_node.hpp"
 #include "skytrack/daemon/logging.hpp"
+#include "skytrack/daemon/memory_policy.hpp"
 #include "skytrack/daemon/signal_pipe.hpp"
 #include "skytrack/daemon/systemd_notify.hpp"
 #include "skytrack/daemon/tsan_suppressions.hpp"
@@ -138,6 +139,11 @@ int run(const std::string& config_path, bool check_only) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const skytrack::daemon::MemoryPolicy memory = skytrack::daemon::apply_memory_policy();
+  if (!memory.freed_memory_kept) {
+    std::fputs("skytrackd: the C library refused the malloc settings (memory_policy.hpp)\n",
+               stderr);
+  }
   CLI::App app{"skytrackd - radar track-processing daemon: PlotBatch in, TrackBatch out (DDS)"};
   std::string config_path;
   bool check_only = false;
