@@ -12,9 +12,22 @@
 #include <fstream>
 #include <string>
 
+// ASan and TSan own malloc: glibc's settings and heap are not theirs.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define SKYTRACK_GLIBC_MALLOC 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define SKYTRACK_GLIBC_MALLOC 0
+#endif
+#endif
+#ifndef SKYTRACK_GLIBC_MALLOC
+#define SKYTRACK_GLIBC_MALLOC 1
+#endif
+
 namespace {
 
 TEST(MemoryPolicy, LargeBlocksComeFromTheHeapAndStayMappedWhenFreed) {
+  if (!SKYTRACK_GLIBC_MALLOC) GTEST_SKIP() << "a sanitizer owns malloc";
   ASSERT_TRUE(skytrack::daemon::apply_memory_policy().freed_memory_kept);
   // 8 MiB: far above glibc's default mmap threshold (128 KiB), below the policy's 32 MiB.
   constexpr std::size_t kBlock = 8u << 20;
@@ -32,6 +45,7 @@ TEST(MemoryPolicy, LargeBlocksComeFromTheHeapAndStayMappedWhenFreed) {
 }
 
 TEST(MemoryPolicy, TheHeapIsAdvisedForHugePages) {
+  if (!SKYTRACK_GLIBC_MALLOC) GTEST_SKIP() << "a sanitizer owns malloc";
   if (!std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled")) {
     GTEST_SKIP() << "this kernel has no transparent huge pages";
   }
