@@ -27,7 +27,7 @@ bool advise_heap_reserve() noexcept {
   const auto begin = reinterpret_cast<std::uintptr_t>(block);
   const auto end = reinterpret_cast<std::uintptr_t>(sbrk(0));
   std::free(block);
-  mallopt(M_TOP_PAD, 0);  // later growth in the default steps
+  mallopt(M_TOP_PAD, 0);  // later growth (past the reserve) by what is asked
   // A heap that is not contiguous below the break (sbrk refused, glibc mapped instead) is
   // left alone.
   if (block == nullptr || end <= begin || end - begin < kHugePage + kLargestHeapBlock) {
