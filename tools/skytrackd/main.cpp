@@ -90,7 +90,8 @@ int check(const std::string& config_path, const DaemonConfig& config) {
   return 0;
 }
 
-int run(const std::string& config_path, bool check_only) {
+int run(const std::string& config_path, bool check_only,
+        const skytrack::daemon::MemoryPolicy& memory) {
   auto config = load_daemon_config(config_path);
   if (!config) {
     std::fprintf(stderr, "%s\n", config.error().message.c_str());
@@ -101,6 +102,9 @@ int run(const std::string& config_path, bool check_only) {
     std::fprintf(stderr, "skytrackd: %s\n", ok.error().message.c_str());
     return 2;
   }
+  spdlog::info("memory: freed memory kept for the next scan: {}; heap advised for huge pages: {}",
+               memory.freed_memory_kept ? "yes" : "no (C library defaults)",
+               memory.huge_page_heap ? "yes" : "no");
   if (auto ok = SignalPipe::install({SIGINT, SIGTERM, SIGHUP}); !ok) {
     spdlog::critical("{}", ok.error().message);
     shutdown_logging();
@@ -156,5 +160,5 @@ int main(int argc, char** argv) {
   app.add_flag("--check", check_only,
                "Validate the configuration and its profile (or fusion file), then exit");
   CLI11_PARSE(app, argc, argv);
-  return run(config_path, check_only);
+  return run(config_path, check_only, memory);
 }
