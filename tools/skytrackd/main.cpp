@@ -144,10 +144,6 @@ int run(const std::string& config_path, bool check_only,
 
 int main(int argc, char** argv) {
   const skytrack::daemon::MemoryPolicy memory = skytrack::daemon::apply_memory_policy();
-  if (!memory.freed_memory_kept) {
-    std::fputs("skytrackd: the C library refused the malloc settings (memory_policy.hpp)\n",
-               stderr);
-  }
   CLI::App app{"skytrackd - radar track-processing daemon: PlotBatch in, TrackBatch out (DDS)"};
   std::string config_path;
   bool check_only = false;
