@@ -162,6 +162,8 @@ void read_extended(YamlSection s, TrackingProfile& p) {
   motion.number("time_constant", e.motion.time_constant, Range{1e-3, 1e6});
   motion.number("accel_noise", e.motion.accel_noise, Range{0.0, kMaxAccel});
   motion.number("manoeuvre_accel", e.motion.manoeuvre_accel, Range{0.0, kMaxAccel});
+  motion.number("straight_duration", e.motion.straight_duration, Range{1e-3, 1e6});
+  motion.number("manoeuvre_duration", e.motion.manoeuvre_duration, Range{1e-3, 1e6});
   motion.finish();
   YamlSection smf = s.section("smf");
   smf.number("scattering", e.smf.scattering, Range{1e-3, 10.0});

@@ -47,6 +47,11 @@ double ExtendedTrack::existence() const {
 
 ExtendedTracker::ExtendedTracker(const ExtendedSpec& spec) : spec_(spec), estimator_(spec) {}
 
+bool ExtendedTracker::mixes_levels() const noexcept {
+  return spec_.kind != EstimatorKind::kSmf &&
+         spec_.motion.manoeuvre_accel > spec_.motion.accel_noise;
+}
+
 ExtendedScanReport ExtendedTracker::process(double time, std::span<const PlotMeasurement> plots,
                                             std::span<const std::vector<int>> partitions) {
   plane_positions_.resize(plots.size());
@@ -105,7 +110,11 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
   for (ExtendedTrack& track : tracks_) {
     was_unresolved_.push_back(track.unresolved);
     priors_.push_back(track.object);
-    if (dt > 0.0) estimator_.predict(track.object, dt);
+    if (dt > 0.0 && mixes_levels()) {
+      predict_levels(track.levels, estimator_, spec_.motion, dt, track.object);
+    } else if (dt > 0.0) {
+      estimator_.predict(track.object, dt);
+    }
     track.plots = 0;
     track.unresolved = false;
     association_extents_.push_back(association_extent(track));
@@ -195,7 +204,8 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     // one stray plot would drag the centre, velocity and extent off the object.
     const bool enough = static_cast<int>(plots.size()) >= std::max(1, spec_.min_partition_plots);
     const Eigen::Matrix2d noise = enough ? buffer_track_plots(t) : Eigen::Matrix2d::Zero();
-    const bool turned = enough && predict_manoeuvre_if_likelier(t, noise);
+    const bool mixing = mixes_levels();
+    const bool turned = enough && !mixing && predict_manoeuvre_if_likelier(t, noise);
     if (!enough || clutter_likelier(t, noise)) {
       // Taken as clutter: the object is unseen, nothing shows a manoeuvre.
       if (turned) std::swap(track.object, turning_);
@@ -204,6 +214,9 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
       if (spec_.coast_constant_velocity && scan_dt_ > 0.0) {
         const Eigen::Vector2d accel(priors_[t].x[4], priors_[t].x[5]);
         coast_constant_velocity(track.object.x, accel, scan_dt_);
+        if (mixing) {
+          for (ExtendedObject& level : track.levels.object) level.x = track.object.x;
+        }
       }
       continue;
     }
@@ -216,7 +229,10 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
                                                         llt.matrixL()(0, 0) * llt.matrixL()(1, 1)
                                                   : 0.0;
     if (track.hits == 1 && scan_dt_ > 0.0) two_point_velocity(track);
-    const UpdateStatus status = estimator_.update(track.object, plot_buffer_, noise);
+    const UpdateStatus status =
+        mixing ? update_levels(track.levels, estimator_, plot_buffer_, noise,
+                               kUniformScatter * association_extents_[t] + noise, track.object)
+               : estimator_.update(track.object, plot_buffer_, noise);
     if (status == UpdateStatus::kNumericFailure) ++report.numeric_failures;
     track.plots = static_cast<int>(plots.size());
     ++report.updated;
@@ -249,6 +265,10 @@ void ExtendedTracker::two_point_velocity(ExtendedTrack& track) const noexcept {
   }
   track.object.P = P;
   track.object.S = P;
+  for (ExtendedObject& level : track.levels.object) {
+    level.x = track.object.x;
+    level.P = level.S = P;
+  }
 }
 
 void ExtendedTracker::initiate(const std::vector<int>& group, ExtendedScanReport& report) {
@@ -277,6 +297,7 @@ void ExtendedTracker::initiate(const std::vector<int>& group, ExtendedScanReport
   ExtendedTrack track;
   track.id = next_id_++;
   track.object = estimator_.initiate(x, P, extent);
+  track.levels = start_levels(track.object, spec_.motion);
   track.hits = 1;
   track.birth_variance = pos_var;
   track.existence_log_odds = existence_birth(spec_.existence);

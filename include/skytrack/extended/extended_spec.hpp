@@ -35,10 +35,15 @@ constexpr std::string_view to_string(EstimatorKind kind) {
 struct MotionSpec {
   double time_constant = 40.0;  // [s] theta
   double accel_noise = 0.5;     // [m/s^2] q
-  /// [m/s^2] q of a manoeuvring object (ExtendedTracker, not the estimators): a scan whose
-  /// plots are likelier under a prediction with it than with accel_noise is predicted with
-  /// it. The objects' hardest manoeuvre; 0 = one level only.
+  /// [m/s^2] q of a manoeuvring object (ExtendedTracker, not the estimators). The random
+  /// matrix and MEM-EKF* mix the two levels per scan (noise_levels.hpp); SMF-EOT predicts a
+  /// scan with it when the plots are likelier under that prediction than under accel_noise's.
+  /// The objects' hardest manoeuvre; 0 = one level only.
   double manoeuvre_accel = 0.0;
+  /// [s] Mean time an object keeps going straight, and keeps manoeuvring (the levels' mixing
+  /// switches between them as a Markov chain: over dt it stays with e^{-dt / duration}).
+  double straight_duration = 120.0;
+  double manoeuvre_duration = 30.0;
   bool operator==(const MotionSpec&) const = default;
 };
 

@@ -21,6 +21,7 @@
 
 #include "skytrack/extended/distance_partitioner.hpp"
 #include "skytrack/extended/extended_estimator.hpp"
+#include "skytrack/extended/noise_levels.hpp"
 #include "skytrack/measurement/plot_measurement.hpp"
 
 namespace skytrack::extended {
@@ -44,6 +45,7 @@ struct ExtendedTrack {
   /// ln(r / (1 - r)), r the probability its object exists (extended_existence.hpp).
   double existence_log_odds = 0.0;
   double manoeuvre_evidence = 0.0;  // CUSUM of log f_manoeuvre - log f_quiet over its scans
+  NoiseLevels levels;  // when the tracker mixes the levels (mixes_levels): object is their mixture
 
   double existence() const;                                        // r
   Eigen::Vector2d position() const { return object.position(); }   // [m] centre
@@ -107,6 +109,7 @@ class ExtendedTracker {
   bool predict_manoeuvre_if_likelier(int t, const Eigen::Matrix2d& noise);
   Eigen::Matrix2d buffer_track_plots(int t);  // into plot_buffer_; returns their mean noise
   void two_point_velocity(ExtendedTrack& track) const noexcept;
+  bool mixes_levels() const noexcept;  // noise_levels.hpp: the Bayesian estimators, two levels
   void manage(ExtendedScanReport& report);
 
   ExtendedSpec spec_;
