@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <unordered_map>
 
 namespace skytrack::clutter {
 namespace {
@@ -89,18 +88,38 @@ std::uint64_t key(int form, Cell c) {
 void raise_to_local_density(std::span<const PlotMeasurement> plots,
                             std::span<const std::uint8_t> counted, const ClutterMapCells& cells,
                             std::vector<double>& density) {
-  // Per form: the extent of the counted plots in the components after the mapped two.
-  std::unordered_map<int, std::array<std::pair<double, double>, kExtra>> extents;
+  // Per form (a batch holds one or two): its grid and the extent of the counted plots in the
+  // components after the mapped two. A short list, searched from the plot's form.
+  struct Form {
+    int id = 0;
+    Grid grid;
+    std::array<std::pair<double, double>, kExtra> extent{};
+  };
+  std::vector<Form> forms;
+  const auto find_form = [&](int id) {
+    for (std::size_t f = 0; f < forms.size(); ++f) {
+      if (forms[f].id == id) return static_cast<int>(f);
+    }
+    return -1;
+  };
   for (std::size_t j = 0; j < plots.size(); ++j) {
     if (counted[j] == 0) continue;
     const PlotMeasurement& p = plots[j];
-    auto [it, fresh] = extents.try_emplace(form_of(p));
+    const int id = form_of(p);
+    int f = find_form(id);
+    const bool fresh = f < 0;
+    if (fresh) {
+      forms.push_back({id, Grid(p, cells), {}});
+      f = static_cast<int>(forms.size()) - 1;
+    }
     for (int i = 2; i < p.z.size(); ++i) {
-      auto& [low, high] = it->second[i - 2];
+      auto& [low, high] = forms[static_cast<std::size_t>(f)].extent[i - 2];
       low = fresh ? p.z[i] : std::min(low, p.z[i]);
       high = fresh ? p.z[i] : std::max(high, p.z[i]);
     }
   }
+  std::vector<int> form_at(plots.size(), -1);
+  for (std::size_t j = 0; j < plots.size(); ++j) form_at[j] = find_form(form_of(plots[j]));
   // Each cell's sums of counted plots (in plot order), in an open-addressing table keyed by
   // cell, and the 3 x 3 block round it, summed once for all the plots in the cell.
   std::vector<std::uint64_t> keys(plots.size(), 0);
@@ -115,8 +134,9 @@ void raise_to_local_density(std::span<const PlotMeasurement> plots,
   std::vector<Sums> sums;
   for (std::size_t j = 0; j < plots.size(); ++j) {
     const PlotMeasurement& p = plots[j];
-    if (!extents.contains(form_of(p))) continue;
-    keys[j] = key(form_of(p), Grid(p, cells).cell_of(p));
+    if (form_at[j] < 0) continue;
+    const Form& form = forms[static_cast<std::size_t>(form_at[j])];
+    keys[j] = key(form.id, form.grid.cell_of(p));
     auto& [k, at] = table[slot_of(keys[j])];
     if (at < 0) {
       k = keys[j];
@@ -129,10 +149,10 @@ void raise_to_local_density(std::span<const PlotMeasurement> plots,
   std::vector<std::uint8_t> summed(sums.size(), 0);
   for (std::size_t j = 0; j < plots.size(); ++j) {
     const PlotMeasurement& p = plots[j];
-    const auto extent_of = extents.find(form_of(p));
-    if (extent_of == extents.end()) continue;
-    const auto& extent = extent_of->second;
-    const Grid grid(p, cells);
+    if (form_at[j] < 0) continue;
+    const Form& form = forms[static_cast<std::size_t>(form_at[j])];
+    const auto& extent = form.extent;
+    const Grid& grid = form.grid;
     const Cell c = grid.cell_of(p);
     const auto at = static_cast<std::size_t>(table[slot_of(keys[j])].second);
     if (!summed[at]) {
@@ -140,7 +160,7 @@ void raise_to_local_density(std::span<const PlotMeasurement> plots,
       for (std::int64_t da = -1; da <= 1; ++da) {
         for (std::int64_t db = -1; db <= 1; ++db) {
           const std::int32_t n =
-              table[slot_of(key(form_of(p), {c.a + da, grid.wrapped(c.b + db)}))].second;
+              table[slot_of(key(form.id, {c.a + da, grid.wrapped(c.b + db)}))].second;
           if (n >= 0) blocks[at].add(sums[static_cast<std::size_t>(n)]);
         }
       }

@@ -23,7 +23,7 @@ struct ClutterMapCells {
 /// measurement kind and size, in the 3 x 3 cells around j (j itself not counted): their count
 /// over the block's area times the width they span in the remaining components (elevation,
 /// range-rate, height). `density[j]` is raised to it, never lowered, so a sparse block keeps
-/// the batch-wide value. Cost: two hash-map passes over the plots.
+/// the batch-wide value. Cost: two passes over the plots through an open-addressing table.
 void raise_to_local_density(std::span<const PlotMeasurement> plots,
                             std::span<const std::uint8_t> counted, const ClutterMapCells& cells,
                             std::vector<double>& density);
