@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "jpda_input.hpp"
+
 namespace skytrack {
 namespace {
 
@@ -15,15 +17,7 @@ std::size_t at(Eigen::Index i) {
 
 bool JpdaByPlots::plan(const Eigen::Ref<const Eigen::MatrixXd>& weights) noexcept {
   const Eigen::Index tracks = weights.rows(), columns = weights.cols();
-  shared_.clear();
-  is_shared_.assign(at(columns), 0);
-  for (Eigen::Index c = 1; c < columns; ++c) {
-    int gating = 0;
-    for (Eigen::Index t = 0; t < tracks && gating < 2; ++t) gating += weights(t, c) > 0.0 ? 1 : 0;
-    if (gating < 2) continue;
-    shared_.push_back(static_cast<int>(c));
-    is_shared_[at(c)] = 1;
-  }
+  detail::find_shared_plots(weights, shared_, is_shared_);
   if (shared_.empty()) return false;
   stay_.assign(at(tracks), 0.0);
   stay_events_.assign(at(tracks), 0);

@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <limits>
 
+#include "jpda_input.hpp"
+
 namespace skytrack {
 namespace {
 
@@ -179,15 +181,7 @@ bool JpdaExact::must_stop(std::int64_t max_states) noexcept {
 
 // Shared plots (gated by >= 2 tracks) get an index and per-track lists (CSR).
 void JpdaExact::classify_plots(const Eigen::Ref<const Eigen::MatrixXd>& weights) noexcept {
-  shared_column_.clear();
-  column_shared_.assign(at(columns_), 0);
-  for (int c = 1; c < columns_; ++c) {
-    int gating = 0;
-    for (int t = 0; t < tracks_ && gating < 2; ++t) gating += weights(t, c) > 0.0 ? 1 : 0;
-    if (gating < 2) continue;
-    shared_column_.push_back(c);
-    column_shared_[at(c)] = 1;
-  }
+  detail::find_shared_plots(weights, shared_column_, column_shared_);
   track_begin_.assign(at(tracks_ + 1), 0);
   track_shared_.clear();
   for (int t = 0; t < tracks_; ++t) {

@@ -1,6 +1,6 @@
 #pragma once
-// Internal helpers shared by JpdaSolver and GnnAssociator: input validation and the
-// all-miss result used when no association can be computed.
+// Internal helpers shared by the association solvers: input validation, the all-miss result
+// used when no association can be computed, and the plots several tracks gate.
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -42,6 +42,23 @@ inline Eigen::Map<Eigen::MatrixXd> reuse(std::vector<double>& buffer, Eigen::Ind
                                          Eigen::Index cols) noexcept {
   buffer.resize(static_cast<std::size_t>(rows * cols));
   return {buffer.data(), rows, cols};
+}
+
+/// The plot columns (c >= 1 of tracks x (1 + plots) weights, column 0 the misses) gated by two
+/// or more tracks (weight > 0): appended to `shared` in column order and flagged in
+/// `is_shared` (one entry per column).
+inline void find_shared_plots(const Eigen::Ref<const Eigen::MatrixXd>& weights,
+                              std::vector<int>& shared, std::vector<char>& is_shared) noexcept {
+  const Eigen::Index tracks = weights.rows(), columns = weights.cols();
+  shared.clear();
+  is_shared.assign(static_cast<std::size_t>(columns), 0);
+  for (Eigen::Index c = 1; c < columns; ++c) {
+    int gating = 0;
+    for (Eigen::Index t = 0; t < tracks && gating < 2; ++t) gating += weights(t, c) > 0.0 ? 1 : 0;
+    if (gating < 2) continue;
+    shared.push_back(static_cast<int>(c));
+    is_shared[static_cast<std::size_t>(c)] = 1;
+  }
 }
 
 /// -log(x), +inf (forbidden) for x <= 0.
