@@ -37,6 +37,15 @@ void share_extent(NoiseLevels& levels, int from) noexcept {
   other.shape_cov = source.shape_cov;
 }
 
+// out's kinematics (x, P; S = P) the moment match of a and b weighted wa and wb.
+void moment_match(const ExtendedObject& a, double wa, const ExtendedObject& b, double wb,
+                  ExtendedObject& out) noexcept {
+  out.x = wa * a.x + wb * b.x;
+  const KinVec da = a.x - out.x, db = b.x - out.x;
+  out.P = wa * (a.P + da * da.transpose()) + wb * (b.P + db * db.transpose());
+  out.S = out.P;
+}
+
 }  // namespace
 
 NoiseLevels start_levels(const ExtendedObject& object, const MotionSpec& motion) noexcept {
@@ -49,12 +58,8 @@ NoiseLevels start_levels(const ExtendedObject& object, const MotionSpec& motion)
 
 ExtendedObject mix(const NoiseLevels& levels) noexcept {
   ExtendedObject out = levels.object[likelier(levels)];
-  const auto& [a, b] = levels.object;
-  const double pa = levels.probability[0], pb = levels.probability[1];
-  out.x = pa * a.x + pb * b.x;
-  const KinVec da = a.x - out.x, db = b.x - out.x;
-  out.P = pa * (a.P + da * da.transpose()) + pb * (b.P + db * db.transpose());
-  out.S = out.P;
+  moment_match(levels.object[0], levels.probability[0], levels.object[1], levels.probability[1],
+               out);
   return out;
 }
 
@@ -70,13 +75,7 @@ void predict_levels(NoiseLevels& levels, const ExtendedEstimator& estimator,
   for (int j = 0; j < 2; ++j) {
     if (!(predicted[j] > 0.0)) continue;
     const double w0 = levels.probability[0] * p(0, j) / predicted[j];
-    const double w1 = 1.0 - w0;
-    const ExtendedObject& a = levels.object[0];
-    const ExtendedObject& b = levels.object[1];
-    mixed[j].x = w0 * a.x + w1 * b.x;
-    const KinVec da = a.x - mixed[j].x, db = b.x - mixed[j].x;
-    mixed[j].P = w0 * (a.P + da * da.transpose()) + w1 * (b.P + db * db.transpose());
-    mixed[j].S = mixed[j].P;
+    moment_match(levels.object[0], w0, levels.object[1], 1.0 - w0, mixed[j]);
   }
   levels.object = mixed;
   for (int j = 0; j < 2; ++j) estimator.predict(levels.object[j], dt, level_motion(motion, j));
