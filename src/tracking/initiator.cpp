@@ -106,7 +106,7 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
   for (std::size_t c = 0; c < chains_.size();) {
     Chain& chain = chains_[c];
     if (static_cast<int>(chain.plots.size()) >= spec_.m) {
-      completed_.push_back({std::move(chain.plots), chain.looks});
+      completed_.push_back({std::move(chain.plots), chain.looks, chain.last});
       chains_[c] = std::move(chains_.back());
       chains_.pop_back();
     } else {
@@ -201,6 +201,7 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
     chain.last_batch = batch;
     chain.looked = std::max(chain.looked, plot.sweep);
     chain.looks = std::max(chain.looks, 1 + revolutions(chain.plots.front(), plot));
+    chain.last = e.plot;
     chain.plots.push_back(plot);
   }
 }
@@ -273,6 +274,7 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
     chain.looks = std::max(seed.looks + 1, 1 + revolutions(seed.plot, plots[i]));
     chain.last_batch = batch;
     chain.looked = std::max(seed.looked, plots[i].sweep);
+    chain.last = static_cast<int>(i);
     chains_.push_back(std::move(chain));
     used_[i] = 1;
   }

@@ -39,6 +39,8 @@ struct PointLook {
   // explains none (initiation.gated_seed_beta).
   std::vector<std::uint8_t>& used_by_branch;
   std::vector<std::uint8_t>& held;
+  // The index in pre.plots() of each plot given to the initiator in this look.
+  std::vector<int>& initiation_plots;
   // Updates with failed modes and clusters whose association failed.
   int numeric_failures = 0;
 
@@ -54,7 +56,8 @@ struct PointLook {
 };
 
 /// The start of a new track's estimate (two-point, then IMM updates with the chain's further
-/// plots, which also update its existence).
+/// plots, which also update its existence: the chain's last plot, from this look, is weighed
+/// against the clutter density estimated round it, as a track's plots are).
 ImmEstimate start_estimate(PointLook& look, const Initiation& initiation, TrackLife& life);
 
 /// Marks in look.held the plots a track's non-manoeuvre association holds back from

@@ -60,7 +60,8 @@ void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame&
                  .batch = batches_,
                  .events = events_,
                  .used_by_branch = used_by_branch_,
-                 .held = held_};
+                 .held = held_,
+                 .initiation_plots = initiation_plots_};
   BranchHooks& hooks = this->hooks();
   hooks.begin(look);
 

@@ -71,7 +71,10 @@ ImmEstimate start_estimate(PointLook& look, const Initiation& initiation, TrackL
     const ImmEstimate predicted = filter.predict(estimate, std::max(plot.time, estimate.time));
     const PlotHypothesis h = filter.hypothesise(predicted, plot);
     if (!h.usable) continue;
-    const double density = look.pre.density(plot, -1);
+    const bool in_look = k + 1 == initiation.plots.size() && initiation.last >= 0 &&
+                         initiation.last < static_cast<int>(look.initiation_plots.size());
+    const double density = look.pre.density(
+        plot, in_look ? look.initiation_plots[static_cast<std::size_t>(initiation.last)] : -1);
     update_existence(life, h.likelihood / density, profile.association.detection_probability,
                      profile.association.gate_probability, profile.point.track_life);
     estimate = look.counted(filter.update(predicted, std::span(&h, 1), std::span(&one, 1), 0.0,
@@ -94,6 +97,7 @@ void PointTracker::initiate(PointLook& look) {
   ScanReport& report = look.report;
   TrackFrame& frame = look.frame;
   std::vector<PlotMeasurement> unused;
+  look.initiation_plots.clear();
   int clouded = 0;
   for (std::size_t j = 0; j < pre.plots().size(); ++j) {
     if (!free_for_initiation(look, j)) continue;
@@ -102,6 +106,7 @@ void PointTracker::initiate(PointLook& look) {
       continue;
     }
     unused.push_back(pre.plots()[j]);
+    look.initiation_plots.push_back(static_cast<int>(j));
   }
   if (clouded > 0) {
     report.plots_in_clouds += clouded;

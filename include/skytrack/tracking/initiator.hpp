@@ -26,6 +26,7 @@ double position_sigma(const PlotMeasurement& plot) noexcept;
 struct Initiation {
   std::vector<PlotMeasurement> plots;
   int scans = 0;  // scans spanned, first to last plot inclusive
+  int last = -1;  // plots.back()'s index in the plots of the step that completed it
 };
 
 class Initiator {
@@ -70,6 +71,7 @@ class Initiator {
     std::uint64_t last_batch = 0;
     int looks = 0;        // looks spanned, from the first plot's on, inclusive
     double looked = 0.0;  // the sweep when it last took a plot or was looked at
+    int last = -1;        // its last plot's index in the batch that gave it
   };
   struct Extension {  // a plot in a chain's gate, at `distance` from its prediction
     double distance = 0.0;
