@@ -64,6 +64,20 @@ TEST(Initiator, TargetChainKeepsItsPlotAgainstAnOlderClutterChain) {
   EXPECT_EQ(started.front().scans, 3);
 }
 
+TEST(Initiator, CompletedChainNamesItsLastPlotInTheBatch) {
+  // The tracker weighs a new track's last plot against the clutter density at that plot of
+  // the batch, which it finds by this index.
+  Initiator initiator(config::InitiationSpec{}, 2);
+  initiator.step(1, 10.0, {plot(1, 10.0, 0, 0)}, kEverywhere);
+  initiator.step(2, 20.0, {plot(9, 20.0, -30000, 0), plot(2, 20.0, 2500, 0)}, kEverywhere);
+  const std::vector<Initiation>& started = initiator.step(
+      3, 30.0, {plot(7, 30.0, 0, 30000), plot(8, 30.0, 0, -30000), plot(3, 30.0, 5000, 0)},
+      kEverywhere);
+  ASSERT_EQ(started.size(), 1u);
+  EXPECT_EQ(ids(started.front()), (std::vector<std::int64_t>{1, 2, 3}));
+  EXPECT_EQ(started.front().last, 2);
+}
+
 TEST(Initiator, ChainWithoutItsThirdPlotWithinNLooksIsDropped) {
   config::InitiationSpec spec;
   spec.n = 3;  // m = 3 of n = 3: no look may be missed
