@@ -43,6 +43,24 @@ std::span<const Eigen::Vector2d> consistent_plots(const SmfSpec& spec, const Ext
   return kept;
 }
 
+// E1 less E2 (eq. 42-48). Where E2 does not fit inside E1 across one axis (a long object's
+// plots spread along its length but no wider than their noise across it) the exact
+// difference is empty, yet the plots still measure the length: along each of E1's axes u the
+// result keeps the support h_E1(u) - h_E2(u), zero where E2 reaches beyond E1.
+Eigen::Matrix2d resolved_difference(const Eigen::Matrix2d& E1, const Eigen::Matrix2d& E2) {
+  const DifferenceResult exact = minkowski_difference(E1, E2);
+  if (!exact.empty) return exact.shape;
+  const EllipseAxes axes = ellipse_axes(E1);
+  const Eigen::Vector2d u(std::cos(axes.orientation), std::sin(axes.orientation));
+  const Eigen::Vector2d w(-u.y(), u.x());
+  auto support = [&E2](const Eigen::Vector2d& v) {
+    return std::sqrt(std::max(v.dot(E2 * v), 0.0));
+  };
+  const double along = std::max(axes.major - support(u), 0.0);
+  const double across = std::max(axes.minor - support(w), 0.0);
+  return along * along * u * u.transpose() + across * across * w * w.transpose();
+}
+
 }  // namespace
 
 void smf_predict(const MotionSpec& motion, ExtendedObject& object, double dt) noexcept {
@@ -77,10 +95,9 @@ Eigen::Matrix2d smf_extent_measurement(const SmfSpec& spec, std::span<const Eige
     const Eigen::Matrix2d X = x.empty ? Eigen::Matrix2d::Zero() : Eigen::Matrix2d(x.shape);
     return floor_axes(X / spec.scattering, spec.min_axis);
   }
-  const DifferenceResult spread = minkowski_difference(B.shape, omega);  // eq. 42-46
-  if (spread.empty) return floor_axes(Eigen::Matrix2d::Zero(), spec.min_axis);
-  const DifferenceResult object = minkowski_difference(spread.shape, sensor_bound);  // eq. 47-48
-  return floor_axes(object.empty ? Eigen::Matrix2d::Zero() : object.shape, spec.min_axis);
+  const Eigen::Matrix2d spread = resolved_difference(B.shape, omega);        // eq. 42-46
+  const Eigen::Matrix2d object = resolved_difference(spread, sensor_bound);  // eq. 47-48
+  return floor_axes(object, spec.min_axis);
 }
 
 UpdateStatus smf_update(const SmfSpec& spec, ExtendedObject& object,

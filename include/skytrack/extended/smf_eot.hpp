@@ -14,7 +14,10 @@
 // ellipse; each plot is a scatterer on the object plus noise in E(0, U), so the object's
 // ellipse is that (-) U. The paper subtracts only Omega's (1 + 1/p) H S H' term, then U,
 // and divides by lambda, which leaves lambda X_pred and U inside the result. Every plot
-// bound is a Minkowski-sum bound of least trace (Theorems 3-4).
+// bound is a Minkowski-sum bound of least trace (Theorems 3-4). Where a difference is empty
+// across one axis only (a long object's plots no wider than their noise across it), the
+// axis the plots resolve keeps its length (smf_eot.cpp), instead of the whole extent falling
+// to SmfSpec::min_axis.
 // Not in the paper: before the update, plots farther from most of the scan's plots than the
 // object's predicted diameter (times a margin) plus the noise leave the update, centre and
 // hull (SmfSpec::outlier_margin, smf_eot.cpp), so a stray plot does not grow the hull.
