@@ -191,6 +191,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     split_shared(group);
   }
   // After the gated partitions, so a track is known to have found none of its own.
+  reconsider_missed_scans();
   std::size_t kept = 0;
   for (const std::vector<int>* group : unassigned) {
     if (!claim_by_confirmed(*group)) unassigned[kept++] = group;
@@ -205,6 +206,8 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     const bool enough = static_cast<int>(plots.size()) >= std::max(1, spec_.min_partition_plots);
     const Eigen::Matrix2d noise = enough ? buffer_track_plots(t) : Eigen::Matrix2d::Zero();
     const bool mixing = mixes_levels();
+    track.missed_scan.kept = false;
+    const double evidence_before = track.manoeuvre_evidence;
     const bool turned = enough && !mixing && predict_manoeuvre_if_likelier(t, noise);
     if (!enough || clutter_likelier(t, noise)) {
       // Taken as clutter: the object is unseen, nothing shows a manoeuvre.
@@ -220,6 +223,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
       }
       continue;
     }
+    keep_missed_scan(t, turned ? turning_ : track.object, evidence_before);
     // The plot gate's area before the update, where clutter could have come from.
     const PosMat H = position_matrix();
     const Eigen::Matrix2d G =

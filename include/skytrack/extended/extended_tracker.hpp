@@ -10,7 +10,10 @@
 // whose plots lie in the plot gate of a confirmed track that found none of its own goes to that
 // track (the object seen off its prediction), the others start tentative tracks; a plot alone
 // in its partition joins a track's update only beside, and within the object's reach of, a
-// partition of the track's own; each track is updated by the profile's estimator; tentative tracks
+// partition of the track's own; a confirmed track that finds no plots of its own in the scan
+// after one it took plots in is weighed against the track it would be had that scan been a
+// miss, and takes that branch when its plots are likelier the object's over the two scans;
+// each track is updated by the profile's estimator; tentative tracks
 // are confirmed when they keep taking partitions, and tracks that stop taking them are deleted.
 // Deterministic: no random numbers, ties broken by track number and plot index.
 #include <cstdint>
@@ -31,6 +34,19 @@ inline constexpr double kUniformScatter = 0.25;
 
 enum class ExtendedTrackStatus : std::uint8_t { kTentative, kConfirmed };
 
+/// A track as it would stand had its last scan been a miss, kept for one scan: a scan's
+/// plots taken are weighed again once the next shows where the object is
+/// (ExtendedTracker::reconsider_missed_scans, extended_missed_scan.cpp).
+struct MissedScan {
+  bool kept = false;      // the track took plots in its last scan
+  ExtendedObject object;  // its prediction to that scan, coasted as a miss would
+  NoiseLevels levels;
+  double existence_log_odds = 0.0;  // after that scan as a miss
+  double manoeuvre_evidence = 0.0;
+  double log_ratio = 0.0;  // those plots: the object seen against clutter (the clutter test)
+  int misses = 0;
+};
+
 struct ExtendedTrack {
   std::uint64_t id = 0;  // stable track number, from 1, never reused
   ExtendedTrackStatus status = ExtendedTrackStatus::kTentative;
@@ -46,6 +62,7 @@ struct ExtendedTrack {
   double existence_log_odds = 0.0;
   double manoeuvre_evidence = 0.0;  // CUSUM of log f_manoeuvre - log f_quiet over its scans
   NoiseLevels levels;  // when the tracker mixes the levels (mixes_levels): object is their mixture
+  MissedScan missed_scan;
 
   double existence() const;                                        // r
   Eigen::Vector2d position() const { return object.position(); }   // [m] centre
@@ -100,6 +117,8 @@ class ExtendedTracker {
   void split_shared(const std::vector<int>& group);
   void one_object_only(const std::vector<int>& group);  // a split where one object is all
   bool claim_by_confirmed(const std::vector<int>& group);
+  void keep_missed_scan(int t, const ExtendedObject& quiet, double evidence_before);
+  void reconsider_missed_scans();  // before the claims: a track's last scan as a miss
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
   void drop_lone_plots(int t);  // lone plots away from the track's cluster of this scan
   // The next two read the track's plots of this scan from plot_buffer_ (buffer_track_plots)
@@ -130,6 +149,8 @@ class ExtendedTracker {
   std::vector<Eigen::Matrix2d> association_extents_;  // per track, this scan
   std::vector<char> was_unresolved_;                  // per track, the last scan's flag
   std::vector<ExtendedObject> priors_;
+  double clutter_log_ratio_ = 0.0;           // the last clutter test's (clutter_likelier)
+  std::vector<int> weighed_, best_weighed_;  // workspaces of reconsider_missed_scans
   ExtendedObject turning_;  // workspace of predict_manoeuvre_if_likelier                // per
                             // track, the object before predict
   std::vector<Eigen::Vector2d> split_centre_;  // per gating track, its centre in the split
