@@ -148,12 +148,11 @@ class ExtendedTracker {
   std::vector<Gated> gated_;
   std::vector<Eigen::Matrix2d> association_extents_;  // per track, this scan
   std::vector<char> was_unresolved_;                  // per track, the last scan's flag
-  std::vector<ExtendedObject> priors_;
-  double clutter_log_ratio_ = 0.0;           // the last clutter test's (clutter_likelier)
-  std::vector<int> weighed_, best_weighed_;  // workspaces of reconsider_missed_scans
-  ExtendedObject turning_;  // workspace of predict_manoeuvre_if_likelier                // per
-                            // track, the object before predict
-  std::vector<Eigen::Vector2d> split_centre_;  // per gating track, its centre in the split
+  std::vector<ExtendedObject> priors_;                // per track, the object before predict
+  double clutter_log_ratio_ = 0.0;                    // the last clutter test's (clutter_likelier)
+  std::vector<int> weighed_, best_weighed_;           // workspaces of reconsider_missed_scans
+  ExtendedObject turning_;                            // workspace of predict_manoeuvre_if_likelier
+  std::vector<Eigen::Vector2d> split_centre_;         // per gating track, its centre in the split
   std::vector<Eigen::Matrix2d> split_cov_;
   std::vector<int> split_owner_;  // per plot of the partition, its index into gated_
   std::vector<const std::vector<int>*> unassigned_;
