@@ -41,6 +41,9 @@ struct PointLook {
   std::vector<std::uint8_t>& held;
   // The index in pre.plots() of each plot given to the initiator in this look.
   std::vector<int>& initiation_plots;
+  // start_estimate's prediction and innovation shapes, whose storage every start reuses.
+  ImmEstimate& start_predicted;
+  HypothesisShapes& start_shapes;
   // Updates with failed modes and clusters whose association failed.
   int numeric_failures = 0;
 

@@ -61,7 +61,9 @@ void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame&
                  .events = events_,
                  .used_by_branch = used_by_branch_,
                  .held = held_,
-                 .initiation_plots = initiation_plots_};
+                 .initiation_plots = initiation_plots_,
+                 .start_predicted = start_predicted_,
+                 .start_shapes = start_shapes_};
   BranchHooks& hooks = this->hooks();
   hooks.begin(look);
 

@@ -66,10 +66,12 @@ ImmEstimate start_estimate(PointLook& look, const Initiation& initiation, TrackL
                          probabilities.data(), static_cast<Eigen::Index>(probabilities.size())),
                      b.time);
   const double one = 1.0;
+  ImmEstimate& predicted = look.start_predicted;
   for (std::size_t k = 2; k < initiation.plots.size(); ++k) {
     const PlotMeasurement& plot = initiation.plots[k];
-    const ImmEstimate predicted = filter.predict(estimate, std::max(plot.time, estimate.time));
-    const PlotHypothesis h = filter.hypothesise(predicted, plot);
+    filter.predict(estimate, std::max(plot.time, estimate.time), predicted);
+    look.start_shapes.clear();
+    const PlotHypothesis h = filter.hypothesise(predicted, plot, look.start_shapes);
     if (!h.usable) continue;
     const bool in_look = k + 1 == initiation.plots.size() && initiation.last >= 0 &&
                          initiation.last < static_cast<int>(look.initiation_plots.size());
@@ -77,9 +79,10 @@ ImmEstimate start_estimate(PointLook& look, const Initiation& initiation, TrackL
         plot, in_look ? look.initiation_plots[static_cast<std::size_t>(initiation.last)] : -1);
     update_existence(life, h.likelihood / density, profile.association.detection_probability,
                      profile.association.gate_probability, profile.point.track_life);
-    estimate = look.counted(filter.update(predicted, std::span(&h, 1), std::span(&one, 1), 0.0,
-                                          profile.association.detection_probability,
-                                          profile.association.gate_probability, density));
+    filter.update(predicted, std::span(&h, 1), std::span(&one, 1), 0.0,
+                  profile.association.detection_probability, profile.association.gate_probability,
+                  density, estimate);
+    look.count(estimate);
   }
   return estimate;
 }

@@ -94,6 +94,8 @@ class PointTracker final : public Estimator {
   std::vector<TrackEvent> events_;                   // held until the look has decided them all
   std::vector<std::uint8_t> used_by_branch_, held_;  // per plot (point_look.hpp)
   std::vector<int> initiation_plots_;                // point_look.hpp
+  ImmEstimate start_predicted_;                      // start_estimate's (point_look.hpp)
+  HypothesisShapes start_shapes_;
   std::vector<std::pair<std::int64_t, std::int64_t>> renamed_;
   std::vector<int> kind_list_;
 };
