@@ -86,6 +86,23 @@ void Preprocessing::estimate_density(std::span<const std::uint8_t> false_plots) 
   boxed_.resize(plots_.size());
   for (std::size_t j = 0; j < plots_.size(); ++j) boxed_[j] = rejected_[j] || crowd_[j] ? 0 : 1;
   density_.estimate(sensor_, windowed_, plots_, boxed_, counted_, estimate_);
+  own_.resize(plots_.size());
+  for (std::size_t j = 0; j < plots_.size(); ++j) own_[j] = estimate_[j] > 0.0 ? 1 : 0;
+}
+
+void Preprocessing::share_density(std::span<const int> gate) {
+  if (own_.size() != estimate_.size()) return;  // no estimate made in this look
+  double shared = 0.0;
+  for (const int j : gate) {
+    if (own_[static_cast<std::size_t>(j)]) {
+      shared = std::max(shared, estimate_[static_cast<std::size_t>(j)]);
+    }
+  }
+  if (!(shared > 0.0)) return;
+  for (const int j : gate) {
+    double& estimate = estimate_[static_cast<std::size_t>(j)];
+    if (!own_[static_cast<std::size_t>(j)]) estimate = std::max(estimate, shared);
+  }
 }
 
 double Preprocessing::density(const PlotMeasurement& plot, int index) const {

@@ -122,6 +122,15 @@ void ClusterAssociator::estimate_clutter_density(Preprocessing& pre,
     if (is_reported_as_firm(tracks[c.track].life.status)) false_plots_[c.plot] = 0;
   }
   pre.estimate_density(false_plots_);
+  // Candidates come track by track (gater.cpp): each run is one track's gate.
+  for (std::size_t k = 0; k < candidates.size();) {
+    gate_.clear();
+    const int track = candidates[k].track;
+    for (; k < candidates.size() && candidates[k].track == track; ++k) {
+      gate_.push_back(candidates[k].plot);
+    }
+    pre.share_density(gate_);
+  }
 }
 
 }  // namespace skytrack

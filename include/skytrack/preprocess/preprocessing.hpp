@@ -69,6 +69,11 @@ class Preprocessing {
   /// Estimates each plot's clutter density (unless the profile fixes it). `false_plots`: per
   /// plot, 1 where the clutter map may count it as a false plot (no firm track gates it).
   void estimate_density(std::span<const std::uint8_t> false_plots);
+  /// The plots of one gate (indices in plots()) share its clutter density: a gate is smaller
+  /// than the clutter map resolves, so a plot with no counted plot round it (no estimate of
+  /// its own, only the profile's sparse value) takes the largest estimate of the others.
+  /// Estimates shared from one gate are not passed on to another.
+  void share_density(std::span<const int> gate);
   /// The clutter density of plot `index` of this look in its measurement space (-1: a plot of
   /// an earlier look): the estimate, or the profile's value times the polar volume element.
   double density(const PlotMeasurement& plot, int index) const;
@@ -93,6 +98,7 @@ class Preprocessing {
   std::vector<std::uint8_t> boxed_;    // per plot: counted by the batch-wide density
   std::vector<std::uint8_t> counted_;  // per plot: counted by the clutter map
   std::vector<double> estimate_;       // per plot, measurement space; 0: none
+  std::vector<std::uint8_t> own_;      // per plot: estimate_ is its own (not shared)
 };
 
 }  // namespace skytrack

@@ -42,7 +42,8 @@ class ClusterAssociator {
              double gate_probability, const OnTrack& on_track, bool manoeuvre = false);
 
   /// Each plot's clutter density for this look; the clutter map counts the plots no firm
-  /// track gates (in `candidates`): those are the false plots.
+  /// track gates (in `candidates`): those are the false plots. The plots of each track's gate
+  /// then share its density (Preprocessing::share_density).
   void estimate_clutter_density(Preprocessing& pre, const std::vector<PointTrack>& tracks,
                                 const std::vector<Candidate>& candidates);
 
@@ -57,6 +58,7 @@ class ClusterAssociator {
   JpdaResult pda_result_;
   std::vector<GatedPair> pairs_;
   std::vector<std::uint8_t> false_plots_;
+  std::vector<int> gate_;  // one track's candidate plots (estimate_clutter_density)
   // Per-solve workspaces, kept from cluster to cluster and look to look.
   JpdaProblem problem_;
   std::vector<int> first_;
