@@ -76,6 +76,7 @@ const clutter::ClutterRejectionResult& Preprocessing::reject_clutter(
 
 void Preprocessing::estimate_density(std::span<const std::uint8_t> false_plots) {
   estimate_.assign(plots_.size(), 0.0);
+  own_.assign(plots_.size(), 0);
   if (profile_.association.clutter_density) return;
   counted_.assign(plots_.size(), 0);
   if (profile_.association.clutter_map.enabled) {
@@ -86,12 +87,11 @@ void Preprocessing::estimate_density(std::span<const std::uint8_t> false_plots) 
   boxed_.resize(plots_.size());
   for (std::size_t j = 0; j < plots_.size(); ++j) boxed_[j] = rejected_[j] || crowd_[j] ? 0 : 1;
   density_.estimate(sensor_, windowed_, plots_, boxed_, counted_, estimate_);
-  own_.resize(plots_.size());
   for (std::size_t j = 0; j < plots_.size(); ++j) own_[j] = estimate_[j] > 0.0 ? 1 : 0;
 }
 
 void Preprocessing::share_density(std::span<const int> gate) {
-  if (own_.size() != estimate_.size()) return;  // no estimate made in this look
+  if (own_.size() != estimate_.size()) return;  // no estimate made yet
   double shared = 0.0;
   for (const int j : gate) {
     if (own_[static_cast<std::size_t>(j)]) {
