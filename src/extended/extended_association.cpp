@@ -132,6 +132,7 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
       split_cov_[g] = prior - K * prior;
     }
   }
+  if (k == 2) exchange_if_likelier(group);
   if (k == 2 && spec_.one_object_split_test) one_object_only(group);
   for (std::size_t p = 0; p < group.size(); ++p) {
     if (split_owner_[p] < 0) continue;
@@ -143,25 +144,49 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
   }
 }
 
-void ExtendedTracker::one_object_only(const std::vector<int>& group) {
-  // Two tracks split the partition, but one object may be all of it (the other missed, as a
-  // crossing's objects part): a split less likely than one track's object missed and the
-  // other's giving every plot (split_log_ratio) gives them all to that other track.
+void ExtendedTracker::exchange_if_likelier(const std::vector<int>& group) {
+  // The EM settles in the optimum nearest its start, the predicted shapes alone: a track that
+  // coasted far behind its object starts nearer the other object's plots and may leave with
+  // them. With two tracks the other labelling is the split exchanged; the likelier of the two
+  // under the tracks' predictions with their centre covariances is kept. SMF-EOT's P bounds
+  // its state set: it is no covariance to weigh the two with.
+  if (spec_.kind == EstimatorKind::kSmf) return;
   std::vector<Eigen::Vector2d> share[2];
+  PlotsModel model[2];
+  plots_models(group, share, model);
+  if (!(exchange_log_ratio(share[0], share[1], model[0], model[1]) > 0.0)) return;
+  for (int& owner : split_owner_) {
+    if (owner >= 0) owner = 1 - owner;
+  }
+}
+
+void ExtendedTracker::plots_models(const std::vector<int>& group,
+                                   std::vector<Eigen::Vector2d> (&share)[2],
+                                   PlotsModel (&model)[2]) const {
+  // Each track's share of a two-track split and its model of its object's plots: centre at
+  // its prediction with HPH', each plot scattered by X / 4 plus the plots' mean noise.
   Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
   for (std::size_t p = 0; p < group.size(); ++p) {
     if (split_owner_[p] >= 0) share[split_owner_[p]].push_back(positions_[group[p]]);
     noise += noises_[group[p]];
   }
-  if (share[0].empty() || share[1].empty()) return;
-  noise /= static_cast<double>(group.size());
+  noise /= static_cast<double>(std::max<std::size_t>(group.size(), 1));
   const PosMat H = position_matrix();
-  PlotsModel model[2];
   for (int g = 0; g < 2; ++g) {
     const int t = gated_[g].track;
     model[g] = {tracks_[t].position(), H * tracks_[t].object.P * H.transpose(),
                 kUniformScatter * association_extents_[t] + noise};
   }
+}
+
+void ExtendedTracker::one_object_only(const std::vector<int>& group) {
+  // Two tracks split the partition, but one object may be all of it (the other missed, as a
+  // crossing's objects part): a split less likely than one track's object missed and the
+  // other's giving every plot (split_log_ratio) gives them all to that other track.
+  std::vector<Eigen::Vector2d> share[2];
+  PlotsModel model[2];
+  plots_models(group, share, model);
+  if (share[0].empty() || share[1].empty()) return;
   const ExistenceSpec& e = spec_.existence;
   const double without[2] = {split_log_ratio(share[0], share[1], model[0], model[1], e),
                              split_log_ratio(share[1], share[0], model[1], model[0], e)};

@@ -105,6 +105,17 @@ double split_log_ratio(std::span<const Eigen::Vector2d> own, std::span<const Eig
          log_f(other, other_model) - log_f(all, other_model);
 }
 
+double exchange_log_ratio(std::span<const Eigen::Vector2d> own,
+                          std::span<const Eigen::Vector2d> other, const PlotsModel& own_model,
+                          const PlotsModel& other_model) {
+  if (own.empty() || other.empty()) return -std::numeric_limits<double>::infinity();
+  auto log_f = [](std::span<const Eigen::Vector2d> plots, const PlotsModel& m) {
+    return object_plots_log_density(plots, m.centre, m.centre_cov, m.spread);
+  };
+  return log_f(other, own_model) + log_f(own, other_model) - log_f(own, own_model) -
+         log_f(other, other_model);
+}
+
 double existence_probability(double log_odds) noexcept {
   return 1.0 / (1.0 + std::exp(-log_odds));
 }

@@ -63,6 +63,13 @@ struct PlotsModel {
 double split_log_ratio(std::span<const Eigen::Vector2d> own, std::span<const Eigen::Vector2d> other,
                        const PlotsModel& own_model, const PlotsModel& other_model,
                        const ExistenceSpec& spec);
+/// ln of the likelihood ratio of a two-track split exchanged (`own` plots to the second
+/// track, `other` to the first) against the split as given:
+///   ln [f_1(other) f_2(own) / (f_1(own) f_2(other))]   (object_plots_log_density).
+/// Positive: the exchanged split is the likelier. -infinity when either share is empty.
+double exchange_log_ratio(std::span<const Eigen::Vector2d> own,
+                          std::span<const Eigen::Vector2d> other, const PlotsModel& own_model,
+                          const PlotsModel& other_model);
 /// r from log-odds.
 double existence_probability(double log_odds) noexcept;
 

@@ -24,6 +24,7 @@
 
 #include "skytrack/extended/distance_partitioner.hpp"
 #include "skytrack/extended/extended_estimator.hpp"
+#include "skytrack/extended/extended_existence.hpp"
 #include "skytrack/extended/noise_levels.hpp"
 #include "skytrack/measurement/plot_measurement.hpp"
 
@@ -115,7 +116,11 @@ class ExtendedTracker {
   Eigen::Matrix2d association_extent(const ExtendedTrack& track) const noexcept;
   bool crossing_unresolved() const noexcept;
   void split_shared(const std::vector<int>& group);
-  void one_object_only(const std::vector<int>& group);  // a split where one object is all
+  void exchange_if_likelier(const std::vector<int>& group);  // the split's other labelling
+  void one_object_only(const std::vector<int>& group);       // a split where one object is all
+  // A two-track split's shares and each track's model of its object's plots.
+  void plots_models(const std::vector<int>& group, std::vector<Eigen::Vector2d> (&share)[2],
+                    PlotsModel (&model)[2]) const;
   bool claim_by_confirmed(const std::vector<int>& group);
   void keep_missed_scan(int t, const ExtendedObject& quiet, double evidence_before);
   void reconsider_missed_scans();  // before the claims: a track's last scan as a miss
