@@ -1,6 +1,6 @@
 // The extended tracker's association of partitions several tracks or no track gate: the
 // coast of two shapeless tracks through a crossing, the split of a shared partition
-// (hard-assignment EM) and the claim of an ungated partition by
+// (hard-assignment EM, and its exchange where likelier) and the claim of an ungated partition by
 // a confirmed track seen off its prediction (see extended_tracker.hpp).
 #include <algorithm>
 #include <cmath>

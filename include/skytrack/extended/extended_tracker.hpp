@@ -4,8 +4,9 @@
 // distance partitioning), partitions are gated by each track's extent (floored at a new
 // track's) and given to the gating track; a partition several confirmed tracks gate (two
 // crossing objects) is split plot by plot, the split refined by moving each track's centre
-// to the plots it holds (hard-assignment EM), unless the objects overlap, one track's extent
-// has no shape and their velocities part them by the next scan: then both coast (not a
+// to the plots it holds (hard-assignment EM; with two tracks and a Bayesian estimator the split
+// exchanged is kept where likelier under the predictions), unless the objects overlap, one track's
+// extent has no shape and their velocities part them by the next scan: then both coast (not a
 // miss); a tentative track never shares a confirmed one's partition; a partition no track gates but
 // whose plots lie in the plot gate of a confirmed track that found none of its own goes to that
 // track (the object seen off its prediction), the others start tentative tracks; a plot alone
