@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -132,8 +133,13 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
       split_cov_[g] = prior - K * prior;
     }
   }
-  if (k == 2) exchange_if_likelier(group);
-  if (k == 2 && spec_.one_object_split_test) one_object_only(group);
+  if (k == 2) {
+    std::vector<Eigen::Vector2d> share[2];
+    PlotsModel model[2];
+    plots_models(group, share, model);
+    exchange_if_likelier(share, model);
+    if (spec_.one_object_split_test) one_object_only(share, model);
+  }
   for (std::size_t p = 0; p < group.size(); ++p) {
     if (split_owner_[p] < 0) continue;
     const int t = gated_[split_owner_[p]].track;
@@ -144,20 +150,19 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
   }
 }
 
-void ExtendedTracker::exchange_if_likelier(const std::vector<int>& group) {
+void ExtendedTracker::exchange_if_likelier(std::vector<Eigen::Vector2d> (&share)[2],
+                                           const PlotsModel (&model)[2]) {
   // The EM settles in the optimum nearest its start, the predicted shapes alone: a track that
   // coasted far behind its object starts nearer the other object's plots and may leave with
   // them. With two tracks the other labelling is the split exchanged; the likelier of the two
   // under the tracks' predictions with their centre covariances is kept. SMF-EOT's P bounds
   // its state set: it is no covariance to weigh the two with.
   if (spec_.kind == EstimatorKind::kSmf) return;
-  std::vector<Eigen::Vector2d> share[2];
-  PlotsModel model[2];
-  plots_models(group, share, model);
   if (!(exchange_log_ratio(share[0], share[1], model[0], model[1]) > 0.0)) return;
   for (int& owner : split_owner_) {
     if (owner >= 0) owner = 1 - owner;
   }
+  std::swap(share[0], share[1]);
 }
 
 void ExtendedTracker::plots_models(const std::vector<int>& group,
@@ -179,13 +184,11 @@ void ExtendedTracker::plots_models(const std::vector<int>& group,
   }
 }
 
-void ExtendedTracker::one_object_only(const std::vector<int>& group) {
+void ExtendedTracker::one_object_only(const std::vector<Eigen::Vector2d> (&share)[2],
+                                      const PlotsModel (&model)[2]) {
   // Two tracks split the partition, but one object may be all of it (the other missed, as a
   // crossing's objects part): a split less likely than one track's object missed and the
   // other's giving every plot (split_log_ratio) gives them all to that other track.
-  std::vector<Eigen::Vector2d> share[2];
-  PlotsModel model[2];
-  plots_models(group, share, model);
   if (share[0].empty() || share[1].empty()) return;
   const ExistenceSpec& e = spec_.existence;
   const double without[2] = {split_log_ratio(share[0], share[1], model[0], model[1], e),

@@ -13,10 +13,11 @@
 
 namespace skytrack::extended {
 
-void ExtendedTracker::keep_missed_scan(int t, const ExtendedObject& quiet, double evidence_before) {
+void ExtendedTracker::keep_missed_scan(int t, const ExtendedObject& quiet, double evidence_before,
+                                       double log_ratio) {
   ExtendedTrack& track = tracks_[t];
   MissedScan& missed = track.missed_scan;
-  missed.kept = std::isfinite(clutter_log_ratio_);
+  missed.kept = std::isfinite(log_ratio);
   if (!missed.kept) return;
   // As the miss branch of the update loop: the quiet prediction, coasted at constant velocity.
   missed.object = quiet;
@@ -32,7 +33,7 @@ void ExtendedTracker::keep_missed_scan(int t, const ExtendedObject& quiet, doubl
   missed.existence_log_odds = existence_miss(existence_predict(track.existence_log_odds, e),
                                              std::max(1, spec_.min_partition_plots), e);
   missed.manoeuvre_evidence = evidence_before;
-  missed.log_ratio = clutter_log_ratio_;
+  missed.log_ratio = log_ratio;
   missed.misses = track.misses + 1;
 }
 

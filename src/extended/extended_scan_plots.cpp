@@ -82,18 +82,15 @@ bool ExtendedTracker::predict_manoeuvre_if_likelier(int t, const Eigen::Matrix2d
   return true;
 }
 
-bool ExtendedTracker::clutter_likelier(int t, const Eigen::Matrix2d& noise) {
+double ExtendedTracker::clutter_log_ratio(int t, const Eigen::Matrix2d& noise) const {
   // The plots' joint density under the track (centre N(c, HPH'), each plot scattered by
   // X/4 + R) against clutter of density lambda in a scan that missed the object.
-  clutter_log_ratio_ = std::numeric_limits<double>::quiet_NaN();
-  if (!spec_.clutter_scan_test) return false;
+  if (!spec_.clutter_scan_test) return std::numeric_limits<double>::quiet_NaN();
   const PosMat H = position_matrix();
   const ExtendedTrack& track = tracks_[t];
   const Eigen::Matrix2d spread = kUniformScatter * association_extents_[t] + noise;
-  const double log_ratio = object_plots_log_ratio(
-      plot_buffer_, track.position(), H * track.object.P * H.transpose(), spread, spec_.existence);
-  clutter_log_ratio_ = log_ratio;
-  return log_ratio < 0.0;
+  return object_plots_log_ratio(plot_buffer_, track.position(), H * track.object.P * H.transpose(),
+                                spread, spec_.existence);
 }
 
 }  // namespace skytrack::extended

@@ -209,7 +209,9 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     track.missed_scan.kept = false;
     const double evidence_before = track.manoeuvre_evidence;
     const bool turned = enough && !mixing && predict_manoeuvre_if_likelier(t, noise);
-    if (!enough || clutter_likelier(t, noise)) {
+    const double log_ratio =
+        enough ? clutter_log_ratio(t, noise) : std::numeric_limits<double>::quiet_NaN();
+    if (!enough || log_ratio < 0.0) {
       // Taken as clutter: the object is unseen, nothing shows a manoeuvre.
       if (turned) std::swap(track.object, turning_);
       // Unseen: coast at constant velocity (the acceleration estimated before is no evidence
@@ -223,7 +225,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
       }
       continue;
     }
-    keep_missed_scan(t, turned ? turning_ : track.object, evidence_before);
+    keep_missed_scan(t, turned ? turning_ : track.object, evidence_before, log_ratio);
     // The plot gate's area before the update, where clutter could have come from.
     const PosMat H = position_matrix();
     const Eigen::Matrix2d G =

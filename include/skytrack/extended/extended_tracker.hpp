@@ -117,19 +117,24 @@ class ExtendedTracker {
   Eigen::Matrix2d association_extent(const ExtendedTrack& track) const noexcept;
   bool crossing_unresolved() const noexcept;
   void split_shared(const std::vector<int>& group);
-  void exchange_if_likelier(const std::vector<int>& group);  // the split's other labelling
-  void one_object_only(const std::vector<int>& group);       // a split where one object is all
   // A two-track split's shares and each track's model of its object's plots.
   void plots_models(const std::vector<int>& group, std::vector<Eigen::Vector2d> (&share)[2],
                     PlotsModel (&model)[2]) const;
+  // The split's other labelling, where likelier (the shares follow).
+  void exchange_if_likelier(std::vector<Eigen::Vector2d> (&share)[2], const PlotsModel (&model)[2]);
+  // A split where one object is all.
+  void one_object_only(const std::vector<Eigen::Vector2d> (&share)[2],
+                       const PlotsModel (&model)[2]);
   bool claim_by_confirmed(const std::vector<int>& group);
-  void keep_missed_scan(int t, const ExtendedObject& quiet, double evidence_before);
+  void keep_missed_scan(int t, const ExtendedObject& quiet, double evidence_before,
+                        double log_ratio);
   void reconsider_missed_scans();  // before the claims: a track's last scan as a miss
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
   void drop_lone_plots(int t);  // lone plots away from the track's cluster of this scan
   // The next two read the track's plots of this scan from plot_buffer_ (buffer_track_plots)
   // with their mean noise.
-  bool clutter_likelier(int t, const Eigen::Matrix2d& noise);  // likelier clutter
+  // ln of the plots as the object's against clutter (below 0: clutter); NaN: the test is off.
+  double clutter_log_ratio(int t, const Eigen::Matrix2d& noise) const;
   // True: predicted again with manoeuvre_accel (turning_ then holds the quiet prediction).
   bool predict_manoeuvre_if_likelier(int t, const Eigen::Matrix2d& noise);
   Eigen::Matrix2d buffer_track_plots(int t);  // into plot_buffer_; returns their mean noise
@@ -155,7 +160,6 @@ class ExtendedTracker {
   std::vector<Eigen::Matrix2d> association_extents_;  // per track, this scan
   std::vector<char> was_unresolved_;                  // per track, the last scan's flag
   std::vector<ExtendedObject> priors_;                // per track, the object before predict
-  double clutter_log_ratio_ = 0.0;                    // the last clutter test's (clutter_likelier)
   std::vector<int> weighed_, best_weighed_;           // workspaces of reconsider_missed_scans
   ExtendedObject turning_;                            // workspace of predict_manoeuvre_if_likelier
   std::vector<Eigen::Vector2d> split_centre_;         // per gating track, its centre in the split
