@@ -52,6 +52,24 @@ bool ExtendedTracker::mixes_levels() const noexcept {
          spec_.motion.manoeuvre_accel > spec_.motion.accel_noise;
 }
 
+bool ExtendedTracker::chooses_levels() const noexcept {
+  return spec_.kind == EstimatorKind::kSmf &&
+         spec_.motion.manoeuvre_accel > spec_.motion.accel_noise;
+}
+
+Eigen::Matrix2d ExtendedTracker::gate_centre_cov(int t) {
+  // SMF-EOT picks a scan's level from the plots it gates, so its gates span the manoeuvre
+  // level's set: on the quiet level's alone a turn's first scan falls outside them and the
+  // level choice never sees it. The mixed levels' prediction already holds the manoeuvre.
+  const PosMat H = position_matrix();
+  if (!chooses_levels() || !(scan_dt_ > 0.0)) return H * tracks_[t].object.P * H.transpose();
+  MotionSpec manoeuvre = spec_.motion;
+  manoeuvre.accel_noise = spec_.motion.manoeuvre_accel;
+  turning_ = priors_[t];
+  estimator_.predict(turning_, scan_dt_, manoeuvre);
+  return H * turning_.P * H.transpose();
+}
+
 ExtendedScanReport ExtendedTracker::process(double time, std::span<const PlotMeasurement> plots,
                                             std::span<const std::vector<int>> partitions) {
   plane_positions_.resize(plots.size());
@@ -67,9 +85,7 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const PlotMea
 double ExtendedTracker::gate_distance(int t, const Eigen::Vector2d& z, const Eigen::Matrix2d& noise,
                                       double extent_weight, double* log_det) const noexcept {
   const ExtendedTrack& track = tracks_[t];
-  const PosMat H = position_matrix();
-  const Eigen::Matrix2d G =
-      H * track.object.P * H.transpose() + extent_weight * association_extents_[t] + noise;
+  const Eigen::Matrix2d G = gate_centre_covs_[t] + extent_weight * association_extents_[t] + noise;
   const Eigen::LLT<Eigen::Matrix2d> llt(G);
   if (llt.info() != Eigen::Success) return std::numeric_limits<double>::infinity();
   const Eigen::Vector2d nu = z - track.position();
@@ -105,6 +121,7 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
   report.plots = n - report.rejected_plots;
 
   association_extents_.clear();
+  gate_centre_covs_.clear();
   was_unresolved_.clear();
   priors_.clear();
   for (ExtendedTrack& track : tracks_) {
@@ -118,6 +135,7 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
     track.plots = 0;
     track.unresolved = false;
     association_extents_.push_back(association_extent(track));
+    gate_centre_covs_.push_back(gate_centre_cov(static_cast<int>(gate_centre_covs_.size())));
   }
   if (partitions.empty()) {
     partitioner_.partition(positions_, spec_.partition_distance, groups_);
@@ -227,9 +245,8 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
     }
     keep_missed_scan(t, turned ? turning_ : track.object, evidence_before, log_ratio);
     // The plot gate's area before the update, where clutter could have come from.
-    const PosMat H = position_matrix();
     const Eigen::Matrix2d G =
-        H * track.object.P * H.transpose() + kUniformScatter * association_extents_[t] + noise;
+        gate_centre_covs_[t] + kUniformScatter * association_extents_[t] + noise;
     const Eigen::LLT<Eigen::Matrix2d> llt(G);  // sqrt(det G) = L00 L11
     gate_areas_[t] = llt.info() == Eigen::Success ? std::numbers::pi * spec_.plot_gate *
                                                         llt.matrixL()(0, 0) * llt.matrixL()(1, 1)

@@ -7,6 +7,7 @@
 // alone.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -72,6 +73,7 @@ struct Outcome {
   double error = 0.0;        // [m] RMS centre error from the first turn on, over the runs
   double speed_sigma = 0.0;  // [m/s] mean sqrt of the velocity variance per axis, last scan
   int manoeuvre_scans = 0;   // scans at the manoeuvre level (manoeuvring below)
+  int renumbered_runs = 0;   // runs whose ship was confirmed under more than one number
 };
 
 Outcome run(EstimatorKind kind, double quiet, double manoeuvre, bool turning) {
@@ -86,6 +88,7 @@ Outcome run(EstimatorKind kind, double quiet, double manoeuvre, bool turning) {
   for (int seed = 1; seed <= kRuns; ++seed) {
     ExtendedTracker tracker(spec);
     std::mt19937_64 rng(seed);
+    std::vector<std::uint64_t> numbers;
     for (int k = 0; k < kScans; ++k) {
       const double t = kScan * k;
       const Truth truth = truth_at(t, turning);
@@ -97,12 +100,16 @@ Outcome run(EstimatorKind kind, double quiet, double manoeuvre, bool turning) {
           [](const ExtendedTrack& x) { return x.status == ExtendedTrackStatus::kConfirmed; });
       if (confirmed == tracker.tracks().end()) continue;
       const ExtendedTrack& track = *confirmed;
+      if (std::find(numbers.begin(), numbers.end(), track.id) == numbers.end()) {
+        numbers.push_back(track.id);
+      }
       out.manoeuvre_scans += manoeuvring(track, kind);
       if (t >= 30.0) squared += (track.position() - truth.centre).squaredNorm(), ++scored;
       if (k == kScans - 1) {
         out.speed_sigma += std::sqrt(0.5 * (track.object.P(1, 1) + track.object.P(3, 3))) / kRuns;
       }
     }
+    out.renumbered_runs += numbers.size() > 1;
   }
   out.error = std::sqrt(squared / std::max(scored, 1));
   return out;
@@ -148,6 +155,19 @@ TEST(ManoeuvreLevelMemEkf, MixedLevelsFollowTheShipCloserThanTheQuietLevelAlone)
   // choice of one level a scan, which moved the centre with each plot of the long hull).
   EXPECT_LT(both.error, 0.95 * quiet.error)
       << "quiet alone " << quiet.error << " m, both levels " << both.error << " m";
+}
+
+// An object going straight at the quiet level of a real ship (0.1 m/s^2): the turn's first
+// scan lies outside the quiet level's gates. SMF-EOT chooses its level from the plots its
+// gates took, so it gates on the manoeuvre level's set; the mixed levels' prediction holds
+// the manoeuvre already.
+TEST_P(ManoeuvreLevel, AQuietStraightLevelKeepsTheTurningShipsNumber) {
+  const Outcome out = run(GetParam(), 0.1, 2.0, true);
+  // Measured: no run renumbered, RMS centre error 39 / 53 / 43 m (SMF-EOT / random matrix /
+  // MEM-EKF*); SMF-EOT gating on the quiet level's set renumbered the ship in 2 of 20 runs,
+  // 84 m.
+  EXPECT_EQ(out.renumbered_runs, 0);
+  EXPECT_LT(out.error, 70.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Estimators, ManoeuvreLevel,
