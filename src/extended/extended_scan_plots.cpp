@@ -59,18 +59,14 @@ bool ExtendedTracker::predict_manoeuvre_if_likelier(int t, const Eigen::Matrix2d
   // Two noise levels, chosen by the plots' likelihood under each prediction (no threshold
   // of its own): a quiet level keeps the gates of objects going straight tight against
   // clutter and crossing neighbours, the manoeuvre level follows a turn the quiet one lags.
-  const MotionSpec& quiet = spec_.motion;
-  if (!(quiet.manoeuvre_accel > quiet.accel_noise) || !(scan_dt_ > 0.0)) return false;
+  if (!chooses_levels() || !(scan_dt_ > 0.0)) return false;
   ExtendedTrack& track = tracks_[t];
   const Eigen::Matrix2d spread = kUniformScatter * association_extents_[t] + noise;
   const PosMat H = position_matrix();
   auto log_f = [&](const ExtendedObject& o) {
     return object_plots_log_density(plot_buffer_, o.position(), H * o.P * H.transpose(), spread);
   };
-  MotionSpec manoeuvre = quiet;
-  manoeuvre.accel_noise = quiet.manoeuvre_accel;
-  turning_ = priors_[t];
-  estimator_.predict(turning_, scan_dt_, manoeuvre);
+  turning_ = manoeuvre_predictions_[t];  // gate_centre_cov's
   // Page's CUSUM at zero: the evidence for a manoeuvre over the scans since it last fell to
   // zero, so a turn shown by several scans holds the manoeuvre level through a quiet-looking
   // scan of few plots.

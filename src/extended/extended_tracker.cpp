@@ -65,9 +65,10 @@ Eigen::Matrix2d ExtendedTracker::gate_centre_cov(int t) {
   if (!chooses_levels() || !(scan_dt_ > 0.0)) return H * tracks_[t].object.P * H.transpose();
   MotionSpec manoeuvre = spec_.motion;
   manoeuvre.accel_noise = spec_.motion.manoeuvre_accel;
-  turning_ = priors_[t];
-  estimator_.predict(turning_, scan_dt_, manoeuvre);
-  return H * turning_.P * H.transpose();
+  ExtendedObject& turning = manoeuvre_predictions_[t];
+  turning = priors_[t];
+  estimator_.predict(turning, scan_dt_, manoeuvre);
+  return H * turning.P * H.transpose();
 }
 
 ExtendedScanReport ExtendedTracker::process(double time, std::span<const PlotMeasurement> plots,
@@ -122,6 +123,7 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
 
   association_extents_.clear();
   gate_centre_covs_.clear();
+  manoeuvre_predictions_.resize(tracks_.size());
   was_unresolved_.clear();
   priors_.clear();
   for (ExtendedTrack& track : tracks_) {

@@ -139,9 +139,11 @@ class ExtendedTracker {
   bool predict_manoeuvre_if_likelier(int t, const Eigen::Matrix2d& noise);
   Eigen::Matrix2d buffer_track_plots(int t);  // into plot_buffer_; returns their mean noise
   void two_point_velocity(ExtendedTrack& track) const noexcept;
-  bool mixes_levels() const noexcept;      // noise_levels.hpp: the Bayesian estimators, two levels
-  bool chooses_levels() const noexcept;    // SMF-EOT with two levels: one a scan (CUSUM)
-  Eigen::Matrix2d gate_centre_cov(int t);  // after the track's prediction this scan
+  bool mixes_levels() const noexcept;    // noise_levels.hpp: the Bayesian estimators, two levels
+  bool chooses_levels() const noexcept;  // SMF-EOT with two levels: one a scan (CUSUM)
+  // After the track's prediction this scan; SMF-EOT with two levels: also predicts it at
+  // manoeuvre_accel into manoeuvre_predictions_.
+  Eigen::Matrix2d gate_centre_cov(int t);
   void manage(ExtendedScanReport& report);
 
   ExtendedSpec spec_;
@@ -159,13 +161,14 @@ class ExtendedTracker {
   std::vector<std::vector<int>> groups_;
   std::vector<std::vector<int>> track_plots_;
   std::vector<Gated> gated_;
-  std::vector<Eigen::Matrix2d> association_extents_;  // per track, this scan
-  std::vector<Eigen::Matrix2d> gate_centre_covs_;     // per track, this scan: its gates' HPH'
-  std::vector<char> was_unresolved_;                  // per track, the last scan's flag
-  std::vector<ExtendedObject> priors_;                // per track, the object before predict
-  std::vector<int> weighed_, best_weighed_;           // workspaces of reconsider_missed_scans
-  ExtendedObject turning_;                            // workspace of predict_manoeuvre_if_likelier
-  std::vector<Eigen::Vector2d> split_centre_;         // per gating track, its centre in the split
+  std::vector<Eigen::Matrix2d> association_extents_;   // per track, this scan
+  std::vector<Eigen::Matrix2d> gate_centre_covs_;      // per track, this scan: its gates' HPH'
+  std::vector<char> was_unresolved_;                   // per track, the last scan's flag
+  std::vector<ExtendedObject> priors_;                 // per track, the object before predict
+  std::vector<int> weighed_, best_weighed_;            // workspaces of reconsider_missed_scans
+  ExtendedObject turning_;                             // workspace of predict_manoeuvre_if_likelier
+  std::vector<ExtendedObject> manoeuvre_predictions_;  // per track, SMF-EOT with two levels
+  std::vector<Eigen::Vector2d> split_centre_;          // per gating track, its centre in the split
   std::vector<Eigen::Matrix2d> split_cov_;
   std::vector<int> split_owner_;  // per plot of the partition, its index into gated_
   std::vector<const std::vector<int>*> unassigned_;
