@@ -123,7 +123,7 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
 
   association_extents_.clear();
   gate_centre_covs_.clear();
-  manoeuvre_predictions_.resize(tracks_.size());
+  manoeuvre_predictions_.resize(chooses_levels() ? tracks_.size() : 0);
   was_unresolved_.clear();
   priors_.clear();
   for (ExtendedTrack& track : tracks_) {
