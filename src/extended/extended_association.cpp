@@ -133,7 +133,9 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
       split_cov_[g] = prior - K * prior;
     }
   }
-  if (k == 2) {
+  // SMF-EOT is not exchanged (exchange_if_likelier): without the test against one object its
+  // split needs no models.
+  if (k == 2 && (spec_.kind != EstimatorKind::kSmf || spec_.one_object_split_test)) {
     std::vector<Eigen::Vector2d> share[2];
     PlotsModel model[2];
     plots_models(group, share, model);

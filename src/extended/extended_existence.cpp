@@ -21,6 +21,11 @@ double log_poisson(int n, double mean) {
   return n * std::log(mean) - mean - std::lgamma(static_cast<double>(n) + 1.0);
 }
 
+// The plots' joint density under one track's model (object_plots_log_density).
+double log_f(std::span<const Eigen::Vector2d> plots, const PlotsModel& m) {
+  return object_plots_log_density(plots, m.centre, m.centre_cov, m.spread);
+}
+
 }  // namespace
 
 double existence_birth(const ExistenceSpec& spec) noexcept {
@@ -98,9 +103,6 @@ double split_log_ratio(std::span<const Eigen::Vector2d> own, std::span<const Eig
   }
   std::vector<Eigen::Vector2d> all(own.begin(), own.end());
   all.insert(all.end(), other.begin(), other.end());
-  auto log_f = [](std::span<const Eigen::Vector2d> plots, const PlotsModel& m) {
-    return object_plots_log_density(plots, m.centre, m.centre_cov, m.spread);
-  };
   return std::log(p_d / (1.0 - p_d)) - spec.expected_plots + log_f(own, own_model) +
          log_f(other, other_model) - log_f(all, other_model);
 }
@@ -109,9 +111,6 @@ double exchange_log_ratio(std::span<const Eigen::Vector2d> own,
                           std::span<const Eigen::Vector2d> other, const PlotsModel& own_model,
                           const PlotsModel& other_model) {
   if (own.empty() || other.empty()) return -std::numeric_limits<double>::infinity();
-  auto log_f = [](std::span<const Eigen::Vector2d> plots, const PlotsModel& m) {
-    return object_plots_log_density(plots, m.centre, m.centre_cov, m.spread);
-  };
   return log_f(other, own_model) + log_f(own, other_model) - log_f(own, own_model) -
          log_f(other, other_model);
 }
