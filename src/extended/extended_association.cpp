@@ -1,7 +1,8 @@
 // The extended tracker's association of partitions several tracks or no track gate: the
-// coast of two shapeless tracks through a crossing, the split of a shared partition
-// (hard-assignment EM, and its exchange where likelier) and the claim of an ungated partition by
-// a confirmed track seen off its prediction (see extended_tracker.hpp).
+// likeliest of the tentative tracks sharing one, the coast of two shapeless tracks through a
+// crossing, the split of a shared partition (hard-assignment EM, and its exchange where
+// likelier) and the claim of an ungated partition by a confirmed track seen off its prediction
+// (see extended_tracker.hpp).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -66,6 +67,25 @@ bool ExtendedTracker::crossing_unresolved() const noexcept {
   return now.dot(llt.solve(now)) <= 1.0 && next.dot(llt.solve(next)) > 1.0;
 }
 
+void ExtendedTracker::keep_likeliest_tentative(const Eigen::Vector2d& mean,
+                                               const Eigen::Matrix2d& noise) {
+  // Young tracks sharing a partition: the distance partitioning found one object's plots,
+  // and the tracks are its earlier scans' pieces (a long hull whose plots left a gap wider
+  // than the partition distance) or a duplicate. Split, each piece would keep its half and
+  // be confirmed beside the other; the partition goes whole to the track likeliest to have
+  // given its mean (d^2 + ln det G), and the others starve.
+  int best = -1;
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (const Gated& g : gated_) {
+    double log_det = 0.0;
+    const double cost = gate_distance(g.track, mean, noise, 1.0, &log_det) + log_det;
+    if (cost < best_cost) best_cost = cost, best = g.track;
+  }
+  if (best < 0) return;
+  gated_.clear();
+  gated_.push_back({best, best_cost});
+}
+
 void ExtendedTracker::split_shared(const std::vector<int>& group) {
   // Several tracks gate it (objects close or crossing). A plot-by-plot split from the
   // predictions alone starves the less certain track: its flatter likelihood loses every
@@ -75,26 +95,21 @@ void ExtendedTracker::split_shared(const std::vector<int>& group) {
   // N(z; c, C + X / 4 + R) under each track's current centre c (covariance C), move each
   // centre to its posterior given the plots it holds, and repeat, so each object's plots
   // pull its own centre rather than the prediction's error deciding.
+  // Confirmed tracks only: tentative ones sharing a partition leave it to the likeliest
+  // (keep_likeliest_tentative).
   const int k = static_cast<int>(gated_.size());
-  // Tentative tracks sharing a partition keep the split from their predictions alone, so
-  // the better-placed one takes the plots and a duplicate starves and is dropped.
-  const int iterations = tracks_[gated_.front().track].status == ExtendedTrackStatus::kConfirmed
-                             ? kSplitIterations
-                             : 1;
   split_centre_.resize(k);
   split_cov_.resize(k);
   const PosMat H = position_matrix();
-  // Confirmed tracks start the split from their predicted objects' shapes alone (C = 0):
-  // a track that faded before the crossing has the larger HPH', and with it in the first
-  // assignment its flatter likelihood would lose every plot, leaving it nothing to move to.
+  // The split starts from the predicted objects' shapes alone (C = 0): a track that faded
+  // before the crossing has the larger HPH', and with it in the first assignment its flatter
+  // likelihood would lose every plot, leaving it nothing to move to.
   for (int g = 0; g < k; ++g) {
-    const ExtendedTrack& track = tracks_[gated_[g].track];
-    split_centre_[g] = track.position();
+    split_centre_[g] = tracks_[gated_[g].track].position();
     split_cov_[g].setZero();
-    if (iterations == 1) split_cov_[g].noalias() = H * track.object.P * H.transpose();
   }
   split_owner_.assign(group.size(), -1);
-  for (int iteration = 0; iteration < iterations; ++iteration) {
+  for (int iteration = 0; iteration < kSplitIterations; ++iteration) {
     for (std::size_t p = 0; p < group.size(); ++p) {
       const int i = group[p];
       double best_cost = std::numeric_limits<double>::infinity();

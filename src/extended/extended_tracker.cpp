@@ -194,6 +194,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
         return tracks_[g.track].status != ExtendedTrackStatus::kConfirmed;
       });
     }
+    if (!any_confirmed && gated_.size() > 1) keep_likeliest_tentative(mean, noise);
     if (gated_.size() == 1) {
       const int t = gated_.front().track;
       for (int i : group) {  // clutter beside the object stays out of its update

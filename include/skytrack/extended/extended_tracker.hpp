@@ -7,16 +7,17 @@
 // to the plots it holds (hard-assignment EM; with two tracks and a Bayesian estimator the split
 // exchanged is kept where likelier under the predictions), unless the objects overlap, one track's
 // extent has no shape and their velocities part them by the next scan: then both coast (not a
-// miss); a tentative track never shares a confirmed one's partition; a partition no track gates but
-// whose plots lie in the plot gate of a confirmed track that found none of its own goes to that
-// track (the object seen off its prediction), the others start tentative tracks; a plot alone
-// in its partition joins a track's update only beside, and within the object's reach of, a
-// partition of the track's own; a confirmed track that finds no plots of its own in the scan
-// after one it took plots in is weighed against the track it would be had that scan been a
-// miss, and takes that branch when its plots are likelier the object's over the two scans;
-// each track is updated by the profile's estimator; tentative tracks
-// are confirmed when they keep taking partitions, and tracks that stop taking them are deleted.
-// Deterministic: no random numbers, ties broken by track number and plot index.
+// miss); a tentative track never shares a confirmed one's partition, and tentative tracks sharing
+// one leave it whole to the likeliest (one object's pieces); a partition no track gates but whose
+// plots lie in the plot gate of a confirmed track that found none of its own goes to that track
+// (the object seen off its prediction), the others start tentative tracks; a plot alone in its
+// partition joins a track's update only beside, and within the object's reach of, a partition of
+// the track's own; a confirmed track that finds no plots of its own in the scan after one it took
+// plots in is weighed against the track it would be had that scan been a miss, and takes that
+// branch when its plots are likelier the object's over the two scans; each track is updated by the
+// profile's estimator; tentative tracks are confirmed when they keep taking partitions, and tracks
+// that stop taking them are deleted. Deterministic: no random numbers, ties broken by track number
+// and plot index.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -116,6 +117,8 @@ class ExtendedTracker {
   void associate(std::span<const std::vector<int>> partitions, ExtendedScanReport& report);
   Eigen::Matrix2d association_extent(const ExtendedTrack& track) const noexcept;
   bool crossing_unresolved() const noexcept;
+  // Tentative tracks only gate a partition: gated_ keeps the one likeliest to give its mean.
+  void keep_likeliest_tentative(const Eigen::Vector2d& mean, const Eigen::Matrix2d& noise);
   void split_shared(const std::vector<int>& group);
   // A two-track split's shares and each track's model of its object's plots.
   void plots_models(const std::vector<int>& group, std::vector<Eigen::Vector2d> (&share)[2],
