@@ -87,16 +87,21 @@ void ExtendedTracker::reconsider_missed_scans() {
       estimator_.predict(alternative.object, scan_dt_);
     }
     const Eigen::Matrix2d extent = association_extent(alternative);
-    std::size_t best = unassigned_.size();
+    // The partitions no track gated, then those a track took beside a likelier one of its own.
+    const std::size_t candidates = unassigned_.size() + yieldable_.size();
+    auto candidate = [&](std::size_t g) -> const std::vector<int>& {
+      return g < unassigned_.size() ? *unassigned_[g]
+                                    : groups_[yieldable_[g - unassigned_.size()].partition];
+    };
+    std::size_t best = candidates;
     double best_margin = 0.0;
-    for (std::size_t g = 0; g < unassigned_.size(); ++g) {
-      const double kept =
-          missed.log_ratio +
-          std::max(0.0, weigh(track.object, association_extents_[t], *unassigned_[g]));
-      const double other = weigh(alternative.object, extent, *unassigned_[g]);
+    for (std::size_t g = 0; g < candidates; ++g) {
+      const double kept = missed.log_ratio +
+                          std::max(0.0, weigh(track.object, association_extents_[t], candidate(g)));
+      const double other = weigh(alternative.object, extent, candidate(g));
       if (other - kept > best_margin) best_margin = other - kept, best = g, best_taken = taken;
     }
-    if (best == unassigned_.size()) continue;
+    if (best == candidates) continue;
     // The last scan a miss: the branch's state, existence and counts, and this scan's plots.
     priors_[t] = missed.object;
     track.object = alternative.object;
@@ -107,7 +112,14 @@ void ExtendedTracker::reconsider_missed_scans() {
     track.hits = std::max(0, track.hits - 1);
     association_extents_[t] = extent;
     track_plots_[t] = best_taken;
-    unassigned_.erase(unassigned_.begin() + static_cast<std::ptrdiff_t>(best));
+    if (best < unassigned_.size()) {
+      unassigned_.erase(unassigned_.begin() + static_cast<std::ptrdiff_t>(best));
+    } else {  // the holder gives the piece up
+      const Yieldable piece = yieldable_[best - unassigned_.size()];
+      std::erase_if(track_plots_[piece.track],
+                    [&](int i) { return partition_of_[i] == piece.partition; });
+      yieldable_.erase(yieldable_.begin() + static_cast<std::ptrdiff_t>(best - unassigned_.size()));
+    }
   }
 }
 

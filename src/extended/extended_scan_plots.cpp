@@ -22,7 +22,7 @@ void ExtendedTracker::drop_lone_plots(int t) {
   // object's scan into a count that read as clutter and deleted the track.
   std::vector<int>& plots = track_plots_[t];
   const int min_plots = std::max(1, spec_.min_partition_plots);
-  auto lone = [this, min_plots](int i) { return partition_sizes_[i] < min_plots; };
+  auto lone = [this, min_plots](int i) { return partition_size(i) < min_plots; };
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
   int clustered = 0;
@@ -46,6 +46,57 @@ void ExtendedTracker::drop_lone_plots(int t) {
     const Eigen::Vector2d d = positions_[i] - mean;
     return llt.info() != Eigen::Success || !(d.dot(llt.solve(d)) <= spec_.plot_gate);
   });
+}
+
+void ExtendedTracker::keep_partitions_within_reach(int t) {
+  // A track may take several partitions: a long hull's plots can leave a gap wider than the
+  // partition distance. Pieces of one object have means within its extent of each other; a
+  // partition farther than that from the track's best one (the mean nearest its prediction)
+  // is another object's or clutter that a gate widened by a coast or a manoeuvre reached.
+  // Taken, it pulled the track off its object towards the neighbour, whose own track then
+  // found nothing. Its share of a split is dropped; a partition this track alone gated is
+  // left unassigned (for a track's missed-scan branch, a claim, or a new track). SMF-EOT's
+  // extent is an inner bound (the Minkowski difference) that a few plots of a long hull leave
+  // far short of it, so there it tells no reach: such a partition stays, as one within reach
+  // does, unless the missed-scan branch of a track that found nothing explains it
+  // (reconsider_missed_scans: the neighbour's object, its track pulled off by clutter).
+  std::vector<int>& plots = track_plots_[t];
+  const int min_plots = std::max(1, spec_.min_partition_plots);
+  pieces_.clear();
+  for (int i : plots) {
+    if (partition_size(i) < min_plots) continue;  // lone plots: drop_lone_plots
+    auto piece = std::find_if(pieces_.begin(), pieces_.end(),
+                              [&](const Piece& p) { return p.partition == partition_of_[i]; });
+    if (piece == pieces_.end()) piece = pieces_.insert(pieces_.end(), Piece{partition_of_[i]});
+    piece->mean += positions_[i], piece->noise += noises_[i], ++piece->count;
+  }
+  if (pieces_.size() < 2) return;
+  const Piece* best = nullptr;
+  double best_d2 = std::numeric_limits<double>::infinity();
+  for (Piece& piece : pieces_) {
+    piece.mean /= static_cast<double>(piece.count);
+    piece.noise /= static_cast<double>(piece.count);
+    const double d2 = gate_distance(t, piece.mean, piece.noise, 1.0, nullptr);
+    if (d2 < best_d2) best_d2 = d2, best = &piece;
+  }
+  if (!best) return;
+  const Eigen::Matrix2d& X = association_extents_[t];
+  for (const Piece& piece : pieces_) {
+    if (&piece == best) continue;
+    const bool shared = partition_split_[piece.partition];
+    // Each piece's mean scatters about its own centre by (X / 4 + R) / n.
+    const Eigen::Matrix2d G = X + (kUniformScatter * X + best->noise) / best->count +
+                              (kUniformScatter * X + piece.noise) / piece.count;
+    const Eigen::LLT<Eigen::Matrix2d> llt(G);
+    const Eigen::Vector2d d = piece.mean - best->mean;
+    const bool within = llt.info() == Eigen::Success && d.dot(llt.solve(d)) <= spec_.plot_gate;
+    if (within || (!shared && spec_.kind == EstimatorKind::kSmf)) {
+      if (!shared) yieldable_.push_back({t, piece.partition});
+      continue;
+    }
+    std::erase_if(plots, [&](int i) { return partition_of_[i] == piece.partition; });
+    if (!shared) unassigned_.push_back(&groups_[piece.partition]);
+  }
 }
 
 Eigen::Matrix2d ExtendedTracker::buffer_track_plots(int t) {

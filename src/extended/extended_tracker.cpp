@@ -152,9 +152,9 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
     }
   }
   report.partitions = static_cast<int>(groups_.size());
-  partition_sizes_.assign(n, 0);
-  for (const std::vector<int>& group : groups_) {
-    for (int i : group) partition_sizes_[i] = static_cast<int>(group.size());
+  partition_of_.assign(n, -1);
+  for (std::size_t g = 0; g < groups_.size(); ++g) {
+    for (int i : groups_[g]) partition_of_[i] = static_cast<int>(g);
   }
   associate(groups_, report);
   manage(report);
@@ -169,6 +169,8 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
   for (std::vector<int>& plots : track_plots_) plots.clear();
   std::vector<const std::vector<int>*>& unassigned = unassigned_;
   unassigned.clear();
+  partition_split_.assign(partitions.size(), 0);
+  yieldable_.clear();
   for (const std::vector<int>& group : partitions) {
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
@@ -209,8 +211,10 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
       for (const Gated& g : gated_) tracks_[g.track].unresolved = true;
       continue;
     }
+    partition_split_[&group - partitions.data()] = 1;
     split_shared(group);
   }
+  for (int t = 0; t < track_count; ++t) keep_partitions_within_reach(t);
   // After the gated partitions, so a track is known to have found none of its own.
   reconsider_missed_scans();
   std::size_t kept = 0;

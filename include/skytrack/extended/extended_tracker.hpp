@@ -10,7 +10,9 @@
 // miss); a tentative track never shares a confirmed one's partition, and tentative tracks sharing
 // one leave it whole to the likeliest (one object's pieces); a partition no track gates but whose
 // plots lie in the plot gate of a confirmed track that found none of its own goes to that track
-// (the object seen off its prediction), the others start tentative tracks; a plot alone in its
+// (the object seen off its prediction), the others start tentative tracks; a track takes a
+// second partition only within its object's reach of its best one (a long hull's piece), and
+// yields it to a track whose missed-scan branch explains it; a plot alone in its
 // partition joins a track's update only beside, and within the object's reach of, a partition of
 // the track's own; a confirmed track that finds no plots of its own in the scan after one it took
 // plots in is weighed against the track it would be had that scan been a miss, and takes that
@@ -134,6 +136,8 @@ class ExtendedTracker {
   void reconsider_missed_scans();  // before the claims: a track's last scan as a miss
   void initiate(const std::vector<int>& group, ExtendedScanReport& report);
   void drop_lone_plots(int t);  // lone plots away from the track's cluster of this scan
+  // A partition beyond the object's extent from the track's best one: not its object's.
+  void keep_partitions_within_reach(int t);
   // The next two read the track's plots of this scan from plot_buffer_ (buffer_track_plots)
   // with their mean noise.
   // ln of the plots as the object's against clutter (below 0: clutter); NaN: the test is off.
@@ -177,8 +181,24 @@ class ExtendedTracker {
   std::vector<const std::vector<int>*> unassigned_;
   std::vector<Eigen::Vector2d> plane_positions_;  // PlotMeasurements in the tracking plane
   std::vector<Eigen::Matrix2d> plane_noises_;
-  std::vector<double> gate_areas_;    // [m^2] per track, its plot gate's area this scan
-  std::vector<int> partition_sizes_;  // per plot, the size of its partition this scan
+  std::vector<double> gate_areas_;     // [m^2] per track, its plot gate's area this scan
+  std::vector<int> partition_of_;      // per plot, its index into groups_ this scan (-1: none)
+  std::vector<char> partition_split_;  // per partition, shared by a split this scan
+  struct Piece {                       // a track's plots of one partition
+    int partition = -1;
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
+    int count = 0;
+  };
+  std::vector<Piece> pieces_;  // workspace of keep_partitions_within_reach
+  struct Yieldable {           // a partition a track took beside a likelier one of its own
+    int track = -1;
+    int partition = -1;
+  };
+  std::vector<Yieldable> yieldable_;  // this scan's, for reconsider_missed_scans
+  int partition_size(int i) const {
+    return partition_of_[i] < 0 ? 0 : static_cast<int>(groups_[partition_of_[i]].size());
+  }
 };
 
 }  // namespace skytrack::extended
