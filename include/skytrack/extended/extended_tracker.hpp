@@ -10,9 +10,10 @@
 // miss); a tentative track never shares a confirmed one's partition, and tentative tracks sharing
 // one leave it whole to the likeliest (one object's pieces); a partition no track gates but whose
 // plots lie in the plot gate of a confirmed track that found none of its own goes to that track
-// (the object seen off its prediction), the others start tentative tracks; a track takes a
-// second partition only within its object's reach of its best one (a long hull's piece), and
-// yields it to a track whose missed-scan branch explains it; a plot alone in its
+// (the object seen off its prediction), the others start tentative tracks; a track keeps a
+// second partition only within its object's reach of its best one (a long hull's piece; with
+// SMF-EOT, whose inner extent tells no reach, any unshared one), and yields it to a track whose
+// missed-scan branch explains it; a plot alone in its
 // partition joins a track's update only beside, and within the object's reach of, a partition of
 // the track's own; a confirmed track that finds no plots of its own in the scan after one it took
 // plots in is weighed against the track it would be had that scan been a miss, and takes that
