@@ -43,7 +43,7 @@ TEST(ExtendedCrossingSeeds, EveryObjectKeepsOneNumber) {
   ASSERT_NE(mkdtemp(dir.data()), nullptr);
   const std::string scenario = kRoot + "/config/scenarios/extended_crossing.yaml";
   // 186: a long hull's two pieces confirmed two tracks; 156: a coasting track took a share of
-  // the crossing's partition 600 m off; 267: a track took its neighbour's partition beside its
+  // the crossing's partition 1 km off; 267: a track took its neighbour's partition beside its
   // own; 350: the same within reach, the neighbour's track having taken a clutter pair.
   for (int seed : {156, 186, 267, 350}) {
     const std::string plots = dir + "/p" + std::to_string(seed) + ".jsonl";
