@@ -156,22 +156,21 @@ ExtendedScanReport ExtendedTracker::process(double time, std::span<const Eigen::
   for (std::size_t g = 0; g < groups_.size(); ++g) {
     for (int i : groups_[g]) partition_of_[i] = static_cast<int>(g);
   }
-  associate(groups_, report);
+  associate(report);
   manage(report);
   return report;
 }
 
-void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
-                                ExtendedScanReport& report) {
+void ExtendedTracker::associate(ExtendedScanReport& report) {
   const int track_count = static_cast<int>(tracks_.size());
   track_plots_.resize(track_count);
   gate_areas_.assign(track_count, 0.0);
   for (std::vector<int>& plots : track_plots_) plots.clear();
   std::vector<const std::vector<int>*>& unassigned = unassigned_;
   unassigned.clear();
-  partition_split_.assign(partitions.size(), 0);
+  partition_split_.assign(groups_.size(), 0);
   yieldable_.clear();
-  for (const std::vector<int>& group : partitions) {
+  for (const std::vector<int>& group : groups_) {
     Eigen::Vector2d mean = Eigen::Vector2d::Zero();
     Eigen::Matrix2d noise = Eigen::Matrix2d::Zero();
     for (int i : group) mean += positions_[i], noise += noises_[i];
@@ -211,7 +210,7 @@ void ExtendedTracker::associate(std::span<const std::vector<int>> partitions,
       for (const Gated& g : gated_) tracks_[g.track].unresolved = true;
       continue;
     }
-    partition_split_[&group - partitions.data()] = 1;
+    partition_split_[&group - groups_.data()] = 1;
     split_shared(group);
   }
   for (int t = 0; t < track_count; ++t) keep_partitions_within_reach(t);

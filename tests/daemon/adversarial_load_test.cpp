@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "process_helpers.hpp"
+#include "support/test_domain.hpp"
 
 namespace skytrack::test {
 namespace {
@@ -17,15 +18,14 @@ using namespace std::chrono_literals;
 using ::testing::HasSubstr;
 
 TEST(AdversarialLoad, ReducedRunCompletesAndReportsEveryPhase) {
-  // GIVEN the wrapper script, the built daemon and adversary, and a private domain (119:
-  // apart from the end-to-end tests' 1..110, the crafted samples' 111..118, the DDS tests'
-  // 120..219, the ASTERIX tests' 220..231 and the C clients' 232)
+  // GIVEN the wrapper script, the built daemon and adversary, and a private domain
   const std::string dir =
       (std::filesystem::temp_directory_path() / ("skytrack_adversary_" + std::to_string(getpid())))
           .string();
   std::filesystem::create_directories(dir);
   setenv("SKYTRACK_BUILD_DIR", SKYTRACK_BUILD_DIR, 1);
-  setenv("ADVERSARY_DOMAIN", "119", 1);
+  const TestDomain lease;
+  setenv("ADVERSARY_DOMAIN", std::to_string(lease.id()).c_str(), 1);
   setenv("ADVERSARY_MAX_PLOTS", "2000", 1);
   const std::string log = dir + "/run.log";
 

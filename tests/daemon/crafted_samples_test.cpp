@@ -18,6 +18,7 @@
 #include "skytrack/daemon/dds_session.hpp"
 #include "skytrack/dds/conversion.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
+#include "support/test_domain.hpp"
 
 namespace skytrack::test {
 namespace {
@@ -64,7 +65,8 @@ TEST(CraftedSamples, DaemonAndRecordRefuseThemAndKeepTrackingTheValidOnes) {
   std::filesystem::create_directories(dir);
   const auto path = [&](const std::string& name) { return (dir / name).string(); };
   daemon::DdsSettings dds;
-  dds.domain = 111 + static_cast<int>(getpid() % 8);  // apart from the other tests' domains
+  const TestDomain lease;
+  dds.domain = lease.id();
   std::ofstream(path("skytrackd.yaml"))
       << "skytrackd: {instance: crafted, status_period: 0.2}\n"
       << "dds: {domain: " << dds.domain << ", qos: {status: {deadline: 1.0}}}\n";

@@ -17,6 +17,7 @@
 #include "skytrack/dds/conversion.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
 #include "skytrack/io/jsonl_writer.hpp"
+#include "support/test_domain.hpp"
 
 namespace skytrack::test {
 namespace {
@@ -29,11 +30,6 @@ const std::string kTool = SKYTRACK_TOOL;
 const std::string kDaemon = SKYTRACKD;
 const std::string kProfile = kSource + "/config/profiles/default.yaml";
 
-/// 1..110: apart from the DDS conversion test's 120..219, different for each test process.
-int unique_domain() {
-  return 1 + static_cast<int>(getpid() % 110);
-}
-
 class EndToEnd : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -42,7 +38,7 @@ class EndToEnd : public ::testing::Test {
            ("skytrack_e2e_" + std::string(info->name()) + "_" + std::to_string(getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
-    domain_ = unique_domain();
+    domain_ = lease_.id();
   }
   void TearDown() override {
     if (!HasFailure()) std::filesystem::remove_all(dir_);
@@ -89,6 +85,7 @@ class EndToEnd : public ::testing::Test {
   }
 
   std::filesystem::path dir_;
+  TestDomain lease_;
   int domain_ = 0;
 };
 

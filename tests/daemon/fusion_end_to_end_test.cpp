@@ -16,6 +16,7 @@
 #include "process_helpers.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
 #include "skytrack/io/jsonl_writer.hpp"
+#include "support/test_domain.hpp"
 
 namespace skytrack::test {
 namespace {
@@ -47,7 +48,7 @@ class FusionEndToEnd : public ::testing::Test {
            ("skytrack_fusion_" + std::string(info->name()) + "_" + std::to_string(getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
-    domain_ = 1 + static_cast<int>(getpid() % 110);  // as the other end-to-end tests
+    domain_ = lease_.id();
   }
   void TearDown() override {
     fusion_.reset();  // kills what is still running
@@ -166,6 +167,7 @@ class FusionEndToEnd : public ::testing::Test {
   }
 
   std::filesystem::path dir_;
+  TestDomain lease_;
   int domain_ = 0;
   std::optional<Child> tracker1_, tracker2_, fusion_;
 };

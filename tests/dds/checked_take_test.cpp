@@ -18,6 +18,7 @@
 
 #include "raw_cdr_writer.hpp"
 #include "skytrack/dds/sample_check.hpp"
+#include "support/test_domain.hpp"
 #include "xcdr2_samples.hpp"
 
 namespace skytrack::dds {
@@ -33,12 +34,12 @@ constexpr char kLoopbackXml[] =
     "<MaxAutoParticipantIndex>32</MaxAutoParticipantIndex>"
     "<Peers><Peer address=\"127.0.0.1\"/></Peers></Discovery>";
 
-/// A loopback domain (id unique to this process among the dds tests) with a reliable keep-all
-/// writer and reader of one type on a topic named after the process.
+/// A loopback domain (an id leased to this process) with a reliable keep-all writer and
+/// reader of one type on a topic named after the process.
 class Loopback {
  public:
   explicit Loopback(const dds_topic_descriptor_t* type) {
-    const auto id = static_cast<dds_domainid_t>(120 + getpid() % 100);
+    const auto id = static_cast<dds_domainid_t>(lease_.id());
     domain_ = dds_create_domain(id, kLoopbackXml);
     participant_ = dds_create_participant(id, nullptr, nullptr);
     const std::string name = "skytrack_checked_take_" + std::to_string(getpid());
@@ -62,6 +63,7 @@ class Loopback {
   dds_entity_t writer = 0;
 
  private:
+  test::TestDomain lease_;
   dds_entity_t domain_ = 0;
   dds_entity_t participant_ = 0;
 };

@@ -12,6 +12,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "support/test_domain.hpp"
+
 namespace skytrack::dds {
 namespace {
 
@@ -532,7 +534,8 @@ bool wait_readable(const Endpoints& e) {
 TEST(DdsLoopback, PlotBatchAndTrackBatchTravelThroughCyclone) {
   // GIVEN a loopback domain whose id and topic names are unique to this process
   const int pid = static_cast<int>(getpid());
-  LoopbackDomain dds(static_cast<dds_domainid_t>(120 + pid % 100));
+  const test::TestDomain lease;
+  LoopbackDomain dds(static_cast<dds_domainid_t>(lease.id()));
   ASSERT_GT(dds.domain, 0) << dds_strretcode(dds.domain);
   ASSERT_GT(dds.participant, 0) << dds_strretcode(dds.participant);
   const std::string suffix = "_conversion_test_" + std::to_string(pid);

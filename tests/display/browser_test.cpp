@@ -17,6 +17,7 @@
 
 #include "../daemon/process_helpers.hpp"
 #include "skytrack/io/jsonl_reader.hpp"
+#include "support/test_domain.hpp"
 // Last: httplib pulls in <resolv.h>, whose `_res` macro breaks Eigen's headers after it.
 #include <httplib.h>
 
@@ -115,9 +116,8 @@ TEST_F(DisplayBrowser, PageShowsTheDaemonsTracksWithTheirNumbers) {
             0);
   const std::set<std::int64_t> expected = last_firm_tracks(path("offline.jsonl"));
   ASSERT_GE(expected.size(), 6u);
-  // Every domain id is some test's: this one shares the end-to-end tests' range (1..110, by
-  // process id), and a partition of its own keeps its samples apart from theirs.
-  const int domain = 1 + static_cast<int>(getpid() % 110);
+  const TestDomain lease;
+  const int domain = lease.id();
   std::ofstream(path("skytrackd.yaml"))
       << "skytrackd: {instance: browser, profile: " << kSource
       << "/config/profiles/default.yaml, status_period: 0.2}\n"

@@ -117,7 +117,8 @@ class ExtendedTracker {
   /// association extent.
   double gate_distance(int t, const Eigen::Vector2d& z, const Eigen::Matrix2d& noise,
                        double extent_weight, double* log_det) const noexcept;
-  void associate(std::span<const std::vector<int>> partitions, ExtendedScanReport& report);
+  /// Gates this scan's partitions (groups_) and gives each track its plots.
+  void associate(ExtendedScanReport& report);
   Eigen::Matrix2d association_extent(const ExtendedTrack& track) const noexcept;
   bool crossing_unresolved() const noexcept;
   // Tentative tracks only gate a partition: gated_ keeps the one likeliest to give its mean.
