@@ -8,8 +8,6 @@
 namespace skytrack {
 namespace {
 
-// Largest manoeuvre a chain may show between two plots [m/s^2] (about 6 g).
-constexpr double kMaxAcceleration = 60.0;
 constexpr double kHalfTurn = 3.141592653589793;  // [rad] of sweep
 
 /// Whole revolutions of sweep between two plots (one sensor's; 0 for two sensors').
@@ -58,7 +56,36 @@ double position_sigma(const PlotMeasurement& plot) noexcept {
   return std::max(m.sigma[0], plot.z[0] * m.sigma[1]);
 }
 
-Initiator::Initiator(const config::InitiationSpec& spec, int dims) : spec_(spec), dims_(dims) {}
+ChainManoeuvre ChainManoeuvre::from_models(const std::vector<config::MotionModelSpec>& models,
+                                           int dims) {
+  using config::MotionModelType;
+  ChainManoeuvre out{.accel = 0.0, .turn_rate = 0.0};
+  for (const config::MotionModelSpec& m : models) {
+    switch (m.type) {
+      case MotionModelType::kConstantAcceleration:
+        return {};  // an acceleration of any size is a state: no bound below 6 g
+      case MotionModelType::kCoordinatedTurn:
+        out.turn_rate = std::max(out.turn_rate, std::abs(m.turn_rate));
+        break;
+      case MotionModelType::kCoordinatedTurnEstimated:
+        out.turn_rate = std::max(out.turn_rate, 3.0 * m.initial_turn_rate_sigma);
+        break;
+      case MotionModelType::kConstantVelocity:
+      case MotionModelType::kSinger:
+        break;
+    }
+    out.accel = std::max(out.accel, 3.0 * m.accel_sigma);
+    if (dims == 3) out.accel = std::max(out.accel, 3.0 * m.vertical_accel_sigma);
+  }
+  return models.empty() ? ChainManoeuvre{} : out;
+}
+
+double ChainManoeuvre::at(double speed) const noexcept {
+  return std::min(kMaxAcceleration, accel + turn_rate * speed);
+}
+
+Initiator::Initiator(const config::InitiationSpec& spec, int dims, ChainManoeuvre manoeuvre)
+    : spec_(spec), dims_(dims), manoeuvre_(manoeuvre) {}
 
 const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
                                                const std::vector<PlotMeasurement>& plots,
@@ -127,9 +154,9 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
 void Initiator::search_regions(double time, std::vector<SearchRegion>& out) const {
   for (const Chain& chain : chains_) {
     const double dt = std::max(0.0, time - chain.time);
-    out.push_back(
-        {chain.position + chain.velocity * dt,
-         4.0 * (2.0 * position_sigma(chain.plots.back())) + 0.5 * kMaxAcceleration * dt * dt});
+    out.push_back({chain.position + chain.velocity * dt,
+                   4.0 * (2.0 * position_sigma(chain.plots.back())) +
+                       0.5 * manoeuvre_.at(chain.velocity.norm()) * dt * dt});
   }
 }
 
@@ -150,7 +177,7 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
     if (chain.last_batch == batch) continue;
     const double dt_max = t_max - chain.time;
     radii_[c] = 4.0 * (2.0 * position_sigma(chain.plots.back())) +
-                0.5 * kMaxAcceleration * dt_max * dt_max +
+                0.5 * manoeuvre_.at(chain.velocity.norm()) * dt_max * dt_max +
                 chain.velocity.norm() * 0.5 * (t_max - t_min);
   }
   if (chains_.empty()) return;
@@ -163,12 +190,13 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
     const Chain& chain = chains_[c];
     if (radii_[c] < 0.0) continue;
     const double sigma_last = position_sigma(chain.plots.back());
+    const double accel = manoeuvre_.at(chain.velocity.norm());
     index_.within(chain.position + chain.velocity * (t_mid - chain.time), radii_[c], neighbours_);
     for (const int j : neighbours_) {
       const double dt = plots[j].time - chain.time;
       if (dt <= 0.0 || same_revolution(chain.plots.back(), plots[j])) continue;
       const Eigen::Vector3d expected = chain.position + chain.velocity * dt;
-      const double manoeuvre = 0.5 * kMaxAcceleration * dt * dt;
+      const double manoeuvre = 0.5 * accel * dt * dt;
       const double gate = 4.0 * (sigma_last + position_sigma(plots[j])) + manoeuvre;
       const double d = distance_in(positions_[j], expected, dims_);
       if (d >= gate) continue;

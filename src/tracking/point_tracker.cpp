@@ -34,7 +34,8 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, ImmFilter fil
       filter_(std::move(filter)),
       gater_(profile, filter_.layout().dims),
       associator_(profile),
-      initiator_(profile.point.initiation, filter_.layout().dims),
+      initiator_(profile.point.initiation, filter_.layout().dims,
+                 ChainManoeuvre::from_models(profile.motion_models, filter_.layout().dims)),
       branches_(std::move(branches)) {}
 
 const BranchTree& PointTracker::branch_tree() const {

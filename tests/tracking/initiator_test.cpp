@@ -108,5 +108,55 @@ TEST(Initiator, ThirdPlotIsGatedAlongTheLineOfSightByTheRangeSigma) {
   EXPECT_EQ(third(1600, 100600), 1u);
 }
 
+TEST(ChainManoeuvre, ComesFromTheModelsAndIsBoundedBySixG) {
+  // The default profile's models: CV 2, turns of 0.15 rad/s with 6 m/s^2: 18 m/s^2 and
+  // 0.15 rad/s x speed, so a 100 m/s chain may turn at 33 m/s^2 and a 400 m/s one at 6 g.
+  const std::vector<config::MotionModelSpec> models = config::TrackingProfile{}.motion_models;
+  const ChainManoeuvre m = ChainManoeuvre::from_models(models, 2);
+  EXPECT_DOUBLE_EQ(m.accel, 18.0);
+  EXPECT_DOUBLE_EQ(m.turn_rate, 0.15);
+  EXPECT_DOUBLE_EQ(m.at(100.0), 33.0);
+  EXPECT_DOUBLE_EQ(m.at(400.0), ChainManoeuvre::kMaxAcceleration);
+  // One CV model with q = 0.5 (the peer benchmark's): 3 sigma, at any speed.
+  const ChainManoeuvre cv =
+      ChainManoeuvre::from_models({{.name = "cv",
+                                    .type = config::MotionModelType::kConstantVelocity,
+                                    .accel_sigma = std::sqrt(0.5)}},
+                                  2);
+  EXPECT_NEAR(cv.at(5.0), 3.0 * std::sqrt(0.5), 1e-12);
+  // An acceleration in the state has no bound: 6 g, as without models.
+  const ChainManoeuvre ca = ChainManoeuvre::from_models(
+      {{.name = "ca", .type = config::MotionModelType::kConstantAcceleration}}, 2);
+  EXPECT_DOUBLE_EQ(ca.at(5.0), ChainManoeuvre::kMaxAcceleration);
+  EXPECT_DOUBLE_EQ(ChainManoeuvre::from_models({}, 2).at(5.0), ChainManoeuvre::kMaxAcceleration);
+}
+
+TEST(ChainManoeuvre, ASlowChainTakesNoPlotItsModelsCannotReach) {
+  // A boat at 5 m/s seen every 2.5 s with 5 m plots; its third plot is missed and a clutter
+  // plot lies 60 m off the chain's prediction. With 6 g the gate is 4 x 10 m + 187 m: the
+  // chain takes the clutter plot and starts a track on it. With the models' 2.25 m/s^2
+  // (3 x 0.5, and a 0.15 rad/s turn at 5 m/s) it is 4 x 10 m + 7 m: no track.
+  const auto cartesian = [](std::int64_t id, double time, double x, double y) {
+    PlotMeasurement p = plot(id, time, x, y);
+    p.model = MeasurementModel::cartesian(2, 2, MeasVec::Constant(2, 5.0));
+    return p;
+  };
+  const auto started = [&](ChainManoeuvre manoeuvre) {
+    Initiator initiator(config::InitiationSpec{}, 2, manoeuvre);
+    initiator.step(1, 2.5, {cartesian(1, 2.5, 0, 0)}, kEverywhere);
+    initiator.step(2, 5.0, {cartesian(2, 5.0, 12.5, 0)}, kEverywhere);
+    return initiator.step(3, 7.5, {cartesian(3, 7.5, 25, 60)}, kEverywhere).size();
+  };
+  EXPECT_EQ(started(ChainManoeuvre{}), 1u);
+  const ChainManoeuvre boat = ChainManoeuvre::from_models(
+      {{.name = "cv", .type = config::MotionModelType::kConstantVelocity, .accel_sigma = 0.5},
+       {.name = "ct",
+        .type = config::MotionModelType::kCoordinatedTurn,
+        .accel_sigma = 0.5,
+        .turn_rate = 0.15}},
+      2);
+  EXPECT_EQ(started(boat), 0u);
+}
+
 }  // namespace
 }  // namespace skytrack

@@ -22,6 +22,20 @@ namespace skytrack {
 /// Largest position standard deviation of a plot [m] (cross-range for polar plots).
 double position_sigma(const PlotMeasurement& plot) noexcept;
 
+/// How far a chain's target may stray from the constant-velocity line through its plots: the
+/// acceleration its motion models allow, 3 sigma of their white (or Singer) acceleration
+/// plus the centripetal acceleration of their fastest turn at the chain's own speed, and
+/// never more than about 6 g (the default, also for a model whose acceleration is a state).
+struct ChainManoeuvre {
+  static constexpr double kMaxAcceleration = 60.0;  // [m/s^2]
+  double accel = kMaxAcceleration;                  // [m/s^2]
+  double turn_rate = 0.0;                           // [rad/s]
+
+  static ChainManoeuvre from_models(const std::vector<config::MotionModelSpec>& models, int dims);
+  /// [m/s^2] at `speed` [m/s].
+  double at(double speed) const noexcept;
+};
+
 /// A chain of plots, oldest first, ready to start a track.
 struct Initiation {
   std::vector<PlotMeasurement> plots;
@@ -31,7 +45,7 @@ struct Initiation {
 
 class Initiator {
  public:
-  explicit Initiator(const config::InitiationSpec& spec, int dims);
+  explicit Initiator(const config::InitiationSpec& spec, int dims, ChainManoeuvre manoeuvre = {});
 
   /// Tells whether a batch looked at a position (a sector batch covers part of the sky).
   using Coverage = std::function<bool(const Eigen::Vector3d&)>;
@@ -85,6 +99,7 @@ class Initiator {
 
   config::InitiationSpec spec_;
   int dims_;
+  ChainManoeuvre manoeuvre_;
   std::vector<Seed> seeds_;
   std::vector<Chain> chains_;
   std::vector<Initiation> completed_;
