@@ -107,15 +107,16 @@ std::optional<std::string> dimension_refusal(const config::TrackingProfile& prof
 
 Expected<Pipeline> Pipeline::create(const config::TrackingProfile& profile) {
   // Build the stages of every dimension the first batch may choose now, so a bad model set
-  // or mode fails at start, not at the first batch (which relies on it).
+  // or mode fails at start, not at the first batch (which takes them).
+  std::array<std::optional<EstimatorStages>, 2> built;
   for (const int dims : {2, 3}) {
     if (profile.dimension != 0 && profile.dimension != dims) continue;
     if (dims == 3 && two_dimensional(profile.mode)) continue;
-    if (auto probe = EstimatorStages::create(profile, dims); !probe) {
-      return unexpected(probe.error());
-    }
+    auto made = EstimatorStages::create(profile, dims);
+    if (!made) return unexpected(made.error());
+    built[dims - 2].emplace(std::move(*made));
   }
-  return Pipeline(profile);
+  return Pipeline(profile, std::move(built));
 }
 
 bool Pipeline::place_on_timeline(const PlotScan& scan, bool restarted, SensorFeed& feed) {
@@ -209,7 +210,13 @@ const ScanResult& Pipeline::process(const PlotScan& scan) noexcept {
       return result_;
     }
     if (!usable.plots.empty()) {
-      stages_.emplace(*EstimatorStages::create(profile_, tracker_dimension(profile_, usable)));
+      const int dims = tracker_dimension(profile_, usable);
+      if (auto& ready = built_[dims - 2]) {
+        stages_.emplace(std::move(*ready));
+      } else {
+        stages_.emplace(*EstimatorStages::create(profile_, dims));
+      }
+      for (auto& unused : built_) unused.reset();
     }
   }
   if (stages_) {

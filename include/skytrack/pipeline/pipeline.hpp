@@ -4,11 +4,13 @@
 // a rotating antenna regrouped from whatever batches the feed delivers (antenna_sweep.hpp,
 // look_assembler.hpp), then the tracker the profile's mode selects. One Pipeline::process
 // call per plot batch, in arrival order; each gives a frame at the batch's time.
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "skytrack/config/profile.hpp"
 #include "skytrack/core/expected.hpp"
@@ -60,7 +62,9 @@ class Pipeline {
   void set_input_limits(const config::InputLimitsSpec& limits);
 
  private:
-  explicit Pipeline(const config::TrackingProfile& profile) : profile_(profile) {}
+  Pipeline(const config::TrackingProfile& profile,
+           std::array<std::optional<EstimatorStages>, 2> built)
+      : profile_(profile), built_(std::move(built)) {}
   /// Places the batch on the tracks' time (sensor_timeline.hpp): restarts its sensor's looks,
   /// or every track and look, as the placement says; false when the sensor is held.
   bool place_on_timeline(const PlotScan& scan, bool restarted, SensorFeed& feed);
@@ -68,7 +72,11 @@ class Pipeline {
   const PlotScan& without_invalid_plots(const PlotScan& scan);
 
   config::TrackingProfile profile_;
-  std::optional<EstimatorStages> stages_;  // created with the first batch with plots
+  std::optional<EstimatorStages> stages_;  // taken or created with the first batch with plots
+  // The stages of each dimension the first batch may choose (2-D, 3-D), built by create: the
+  // first batch takes its own rather than building them in its scan time (the models, the
+  // gates' quantiles). Emptied then; after a new timeline stages are built afresh.
+  std::array<std::optional<EstimatorStages>, 2> built_;
   struct SensorState {
     BatchClock clock;
     SensorFeed feed;
