@@ -56,35 +56,63 @@ void GridIndex::build(std::span<const Eigen::Vector3d> positions, int dims, doub
   }
 }
 
+double GridIndex::distance2(const Eigen::Vector3d& centre, const Entry& e) const noexcept {
+  // The k-d tree's metric: squared differences summed in axis order.
+  const double dx = centre.x() - e.position.x(), dy = centre.y() - e.position.y();
+  double d2 = dx * dx;
+  d2 += dy * dy;
+  if (dims_ == 3) {
+    const double dz = centre.z() - e.position.z();
+    d2 += dz * dz;
+  }
+  return d2;
+}
+
+GridIndex::Rows GridIndex::rows_around(const Eigen::Vector3d& centre,
+                                       double radius) const noexcept {
+  if (points_.empty() || !(radius >= 0.0) || !std::isfinite(radius) || !centre.allFinite()) {
+    return {};
+  }
+  // Clamped to [-1, n] before the floor, so a far query cannot overflow a long and the floor
+  // is a truncation (std::floor is a library call on baseline x86-64).
+  const auto clamped = [&](double value, double low, long n) {
+    const double t = std::clamp((value - low) / side_, -1.0, static_cast<double>(n));
+    const long i = static_cast<long>(t);
+    return static_cast<double>(i) > t ? i - 1 : i;
+  };
+  return {std::max(0L, clamped(centre.x() - radius, x0_, nx_)),
+          std::min(nx_ - 1, clamped(centre.x() + radius, x0_, nx_)),
+          std::max(0L, clamped(centre.y() - radius, y0_, ny_)),
+          std::min(ny_ - 1, clamped(centre.y() + radius, y0_, ny_))};
+}
+
 void GridIndex::within(const Eigen::Vector3d& centre, double radius,
                        std::vector<int>& out) const noexcept {
   out.clear();
-  if (points_.empty() || !(radius >= 0.0) || !std::isfinite(radius) || !centre.allFinite()) {
-    return;
-  }
-  // Clamped to the grid in floating point first: a far query must not overflow a long.
-  const auto clamped = [&](double value, double low, long n) {
-    return static_cast<long>(
-        std::clamp(std::floor((value - low) / side_), -1.0, static_cast<double>(n)));
-  };
-  const long ix0 = std::max(0L, clamped(centre.x() - radius, x0_, nx_));
-  const long ix1 = std::min(nx_ - 1, clamped(centre.x() + radius, x0_, nx_));
-  const long iy0 = std::max(0L, clamped(centre.y() - radius, y0_, ny_));
-  const long iy1 = std::min(ny_ - 1, clamped(centre.y() + radius, y0_, ny_));
+  const Rows r = rows_around(centre, radius);
   const double bound = radius * radius;
-  for (long iy = iy0; iy <= iy1; ++iy) {
+  for (long iy = r.y0; iy <= r.y1; ++iy) {
     const std::size_t row = static_cast<std::size_t>(iy * nx_);
-    for (std::uint32_t k = start_[row + static_cast<std::size_t>(ix0)];
-         k < start_[row + static_cast<std::size_t>(ix1) + 1]; ++k) {
-      const Entry& e = points_[k];
-      // The k-d tree's metric: squared differences summed in axis order.
-      double d2 = 0.0;
-      for (int d = 0; d < dims_; ++d)
-        d2 += (centre[d] - e.position[d]) * (centre[d] - e.position[d]);
-      if (d2 <= bound) out.push_back(e.index);
+    const std::uint32_t end = start_[row + static_cast<std::size_t>(r.x1) + 1];
+    for (std::uint32_t k = start_[row + static_cast<std::size_t>(r.x0)]; k < end; ++k) {
+      if (distance2(centre, points_[k]) <= bound) out.push_back(points_[k].index);
     }
   }
   std::sort(out.begin(), out.end());
+}
+
+bool GridIndex::more_than(const Eigen::Vector3d& centre, double radius, int count) const noexcept {
+  const Rows r = rows_around(centre, radius);
+  const double bound = radius * radius;
+  int found = 0;
+  for (long iy = r.y0; iy <= r.y1; ++iy) {
+    const std::size_t row = static_cast<std::size_t>(iy * nx_);
+    const std::uint32_t end = start_[row + static_cast<std::size_t>(r.x1) + 1];
+    for (std::uint32_t k = start_[row + static_cast<std::size_t>(r.x0)]; k < end; ++k) {
+      if (distance2(centre, points_[k]) <= bound && ++found > count) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace skytrack

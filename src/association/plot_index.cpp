@@ -57,23 +57,6 @@ class IndexCollector {
   std::vector<int>& out_;
 };
 
-/// nanoflann result set that counts the points within `bound`, stopping the search once it
-/// has more than `cap`.
-class CountCollector {
- public:
-  CountCollector(double bound, int cap) : bound_(bound), cap_(cap) {}
-  double worstDist() const { return bound_; }
-  bool full() const { return true; }
-  std::size_t size() const { return static_cast<std::size_t>(count_); }
-  bool addPoint(double /*distance_sq*/, std::uint32_t /*index*/) { return ++count_ <= cap_; }
-  int count() const { return count_; }
-
- private:
-  double bound_;
-  int cap_;
-  int count_ = 0;
-};
-
 const nanoflann::KDTreeSingleIndexAdaptorParams kParams{
     kLeafSize, nanoflann::KDTreeSingleIndexAdaptorFlags::SkipInitialBuildIndex};
 
@@ -128,23 +111,6 @@ void PlotIndex::within(const Eigen::Vector3d& centre, double radius,
     impl.tree3.findNeighbors(collector, centre.data(), params);
   }
   std::sort(out.begin(), out.end());
-}
-
-bool PlotIndex::more_than(const Eigen::Vector3d& centre, double radius, int count) const noexcept {
-  const Impl& impl = *impl_;
-  if (impl.cloud.points.empty() || !(radius >= 0.0) || !std::isfinite(radius) ||
-      !centre.allFinite()) {
-    return false;
-  }
-  const double bound = std::nextafter(radius * radius, std::numeric_limits<double>::infinity());
-  CountCollector collector(bound, count);
-  const nanoflann::SearchParams params(/*checks_IGNORED_=*/32, /*eps_=*/0.0F, /*sorted_=*/false);
-  if (impl.dims == 2) {
-    impl.tree2.findNeighbors(collector, centre.data(), params);
-  } else {
-    impl.tree3.findNeighbors(collector, centre.data(), params);
-  }
-  return collector.count() > count;
 }
 
 int PlotIndex::size() const noexcept {

@@ -240,25 +240,30 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
   // reach of that batch's age, so a young seed batch is not searched as far as the oldest.
   seed_groups_.clear();
   for (std::size_t begin = 0; begin < seeds_.size();) {
-    std::size_t end = begin;
-    SeedGroup group{begin, 0, std::numeric_limits<double>::infinity()};
-    std::vector<Eigen::Vector3d>& group_positions = seed_positions_;
-    group_positions.clear();
-    for (; end < seeds_.size() && seeds_[end].batch == seeds_[begin].batch; ++end) {
-      group_positions.push_back(seeds_[end].position);
-      group.oldest = std::min(group.oldest, seeds_[end].plot.time);
-      group.max_sigma = std::max(group.max_sigma, position_sigma(seeds_[end].plot));
+    SeedGroup group{begin, begin, std::numeric_limits<double>::infinity()};
+    for (; group.end < seeds_.size() && seeds_[group.end].batch == seeds_[begin].batch;
+         ++group.end) {
+      group.oldest = std::min(group.oldest, seeds_[group.end].plot.time);
+      group.max_sigma = std::max(group.max_sigma, position_sigma(seeds_[group.end].plot));
     }
-    group.end = end;
-    if (seed_indices_.size() < seed_groups_.size() + 1) seed_indices_.emplace_back();
-    // Cells of the group's reach (below) from the batch's first plot: a query looks at the
-    // 2 x 2 or 3 x 3 cells around it.
-    seed_indices_[seed_groups_.size()].build(
-        group_positions, dims_,
-        spec_.max_speed * std::max(plots.front().time - group.oldest, 0.0) +
-            3.0 * (2.0 * group.max_sigma) + 1.0);
     seed_groups_.push_back(group);
-    begin = end;
+    begin = group.end;
+  }
+  // Cells of the youngest group's reach (below) from the batch's first plot, for every group:
+  // an older group's search is bounded by the nearest seed found in a younger one, mostly
+  // within that reach, so it looks at a few small cells rather than one of its own wide ones.
+  double cell = std::numeric_limits<double>::infinity();
+  for (const SeedGroup& group : seed_groups_) {
+    cell = std::min(cell, spec_.max_speed * std::max(plots.front().time - group.oldest, 0.0) +
+                              3.0 * (2.0 * group.max_sigma) + 1.0);
+  }
+  if (seed_indices_.size() < seed_groups_.size()) seed_indices_.resize(seed_groups_.size());
+  for (std::size_t g = 0; g < seed_groups_.size(); ++g) {
+    seed_positions_.clear();
+    for (std::size_t s = seed_groups_[g].begin; s < seed_groups_[g].end; ++s) {
+      seed_positions_.push_back(seeds_[s].position);
+    }
+    seed_indices_[g].build(seed_positions_, dims_, cell);
   }
   for (std::size_t i = 0; i < plots.size(); ++i) {
     if (used_[i]) continue;

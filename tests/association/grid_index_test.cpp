@@ -27,7 +27,7 @@ std::vector<Eigen::Vector3d> mixed_points(int n, std::mt19937_64& rng) {
   return points;
 }
 
-TEST(GridIndex, WithinMatchesBruteForceAndTheKdTreeForAnyCellSide) {
+TEST(GridIndex, WithinMatchesBruteForceAndTheKdTreeAndMoreThanCountsItForAnyCellSide) {
   std::mt19937_64 rng(23);
   std::uniform_real_distribution<double> xy(-6000.0, 6000.0), z(-200.0, 2200.0),
       radius(0.0, 3000.0);
@@ -49,6 +49,8 @@ TEST(GridIndex, WithinMatchesBruteForceAndTheKdTreeForAnyCellSide) {
           EXPECT_EQ(found, test::brute_force_within(points, dims, at, r))
               << n << " plots, " << dims << " dims, cell " << cell;
           EXPECT_EQ(found, from_tree);
+          const int count = q % 7;  // at, below and above the number found
+          EXPECT_EQ(grid.more_than(at, r, count), static_cast<int>(found.size()) > count);
         }
       }
     }
@@ -79,6 +81,10 @@ TEST(GridIndex, RadiusIsInclusiveTwoDimsIgnoresHeightAndBadInputFindsNothing) {
   EXPECT_TRUE(found.empty());
   grid.within(Eigen::Vector3d(6.0, 0.0, 0.0), 0.0, found);  // radius 0 finds a plot on top
   EXPECT_EQ(found, (std::vector<int>{2}));
+  EXPECT_TRUE(grid.more_than(Eigen::Vector3d::Zero(), 5.0, 1));  // (3, 4) and (0, 0)
+  EXPECT_FALSE(grid.more_than(Eigen::Vector3d::Zero(), 5.0, 2));
+  EXPECT_FALSE(grid.more_than(Eigen::Vector3d::Zero(), nan, 0));
+  EXPECT_FALSE(GridIndex{}.more_than(Eigen::Vector3d::Zero(), 10.0, 0));  // never built
 }
 
 }  // namespace

@@ -29,12 +29,21 @@ class GridIndex {
   /// radius, or a non-finite centre, gives no plots.
   void within(const Eigen::Vector3d& centre, double radius, std::vector<int>& out) const noexcept;
 
+  /// Whether more than `count` plots lie within `radius` of `centre` (as within(); stops
+  /// counting there).
+  bool more_than(const Eigen::Vector3d& centre, double radius, int count) const noexcept;
+
  private:
   struct Entry {
     Eigen::Vector3d position;
     int index = 0;
   };
+  struct Rows {  // the cells a query looks at: columns [x0, x1] of rows [y0, y1]
+    long x0 = 0, x1 = -1, y0 = 0, y1 = -1;
+  };
   long cell_of(double value, double low) const noexcept;
+  Rows rows_around(const Eigen::Vector3d& centre, double radius) const noexcept;
+  double distance2(const Eigen::Vector3d& centre, const Entry& e) const noexcept;
 
   std::vector<Entry> points_;         // in cell order
   std::vector<std::uint32_t> start_;  // points_[start_[c], start_[c + 1]) lie in cell c

@@ -41,10 +41,6 @@ class PlotIndex {
   /// radius, or a non-finite centre, gives no plots.
   void within(const Eigen::Vector3d& centre, double radius, std::vector<int>& out) const noexcept;
 
-  /// True when more than `count` plots lie within `radius` [m] of centre (stops counting
-  /// there: the cost follows `count`, not the crowd).
-  bool more_than(const Eigen::Vector3d& centre, double radius, int count) const noexcept;
-
   int size() const noexcept;  // plots in the last build
   int dims() const noexcept;  // 2 or 3
 

@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 
+#include "skytrack/association/grid_index.hpp"
 #include "skytrack/association/plot_index.hpp"
 #include "skytrack/clutter/clutter_density.hpp"
 #include "skytrack/clutter/clutter_rejector.hpp"
@@ -93,6 +94,8 @@ class Preprocessing {
   std::vector<PlotMeasurement> plots_;
   std::vector<Eigen::Vector3d> positions_;
   PlotIndex index_;
+  GridIndex cloud_index_;  // the cloud test's: its radii have one scale per look
+  std::vector<double> cloud_radii_, cloud_median_;  // per plot; workspace
   std::vector<std::uint8_t> crowd_;
   std::vector<std::uint8_t> rejected_;
   std::vector<std::uint8_t> boxed_;    // per plot: counted by the batch-wide density
