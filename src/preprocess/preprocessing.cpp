@@ -59,18 +59,21 @@ void Preprocessing::prepare(const PlotScan& look, const LookSources* sources, Sc
       dims_ == 3 && std::any_of(plots_.begin(), plots_.end(), [](const PlotMeasurement& p) {
         return is_polar(p.model.kind) && p.model.position_components != 3;
       });
-  index_.build(positions_, heightless ? 2 : dims_);
   cloud_radii_.clear();
   for (const PlotMeasurement& p : plots_) cloud_radii_.push_back(kCloudSigmas * position_sigma(p));
   crowd_.assign(plots_.size(), 0);
-  if (plots_.empty()) return;
-  // Cells of the median radius (the answers do not depend on it, only the work).
-  cloud_median_ = cloud_radii_;
-  const auto median = cloud_median_.begin() + static_cast<std::ptrdiff_t>(cloud_median_.size() / 2);
-  std::nth_element(cloud_median_.begin(), median, cloud_median_.end());
-  cloud_index_.build(positions_, heightless ? 2 : dims_, *median);
+  // Cells of the median cloud radius (the answers do not depend on it, only the work).
+  double cell = 0.0;
+  if (!plots_.empty()) {
+    cloud_median_ = cloud_radii_;
+    const auto median =
+        cloud_median_.begin() + static_cast<std::ptrdiff_t>(cloud_median_.size() / 2);
+    std::nth_element(cloud_median_.begin(), median, cloud_median_.end());
+    cell = *median;
+  }
+  index_.build(positions_, heightless ? 2 : dims_, cell);
   for (std::size_t j = 0; j < plots_.size(); ++j) {
-    crowd_[j] = cloud_index_.more_than(positions_[j], cloud_radii_[j], kCloudPlots);
+    crowd_[j] = index_.more_than(positions_[j], cloud_radii_[j], kCloudPlots);
   }
 }
 

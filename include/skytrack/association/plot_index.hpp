@@ -1,14 +1,13 @@
 #pragma once
-// Spatial index over one scan's plot positions for coarse gating: a k-d tree (Friedman,
+// Spatial index over a set of plot positions for radius queries: a k-d tree (Friedman,
 // Bentley & Finkel 1977, "An algorithm for finding best matches in logarithmic expected
 // time", ACM TOMS 3(3)) from nanoflann 1.4.3, hidden behind this interface so nanoflann
 // stays a private dependency of skytrack_core.
 //
-// Use: the gater asks for every plot within a Euclidean ball around a track's predicted
-// measurement, with radius sqrt(gamma * lambda_max(S)) (the ball that contains the
-// ellipsoidal gate nu' S^-1 nu <= gamma), then applies the exact Mahalanobis test to the
-// few candidates. A query visits O(log n + k) tree nodes for k plots near the ball, so its
-// cost grows with the number of nearby plots, not with the number of plots in the scan.
+// Use: the extended tracker's distance partitioner asks for every plot within its partition
+// distance of each plot. A query visits O(log n + k) tree nodes for k plots near the ball,
+// so its cost grows with the number of nearby plots, not with the number of plots in the
+// scan. (The look's gating uses a grid, GridIndex, whose queries have one scale per look.)
 //
 // Memory. build() copies the positions into a buffer and reuses the tree's index
 // permutation, so after warm-up on the largest scan they do not allocate. nanoflann 1.4.3

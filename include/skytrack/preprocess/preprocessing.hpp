@@ -1,7 +1,7 @@
 #pragma once
 // The stage between a look's plots and every estimator mode: each plot becomes a measurement
-// in the tracking frame (plot_measurement.hpp), with its position, a k-d tree over them and the
-// plot clouds; on the estimator's call, kernel-density clutter rejection with mean-shift
+// in the tracking frame (plot_measurement.hpp), with its position, a grid index over them and
+// the plot clouds; on the estimator's call, kernel-density clutter rejection with mean-shift
 // partitions and measurement boxes (paper 000 §3.1, clutter_rejector.hpp), and the clutter
 // density each plot is weighed against (the batch's or its antenna revolution's, raised by the
 // clutter map; clutter_density.hpp).
@@ -17,7 +17,6 @@
 #include <Eigen/Core>
 
 #include "skytrack/association/grid_index.hpp"
-#include "skytrack/association/plot_index.hpp"
 #include "skytrack/clutter/clutter_density.hpp"
 #include "skytrack/clutter/clutter_rejector.hpp"
 #include "skytrack/config/profile.hpp"
@@ -46,12 +45,13 @@ class Preprocessing {
   /// measurement are counted in report.plots_invalid.
   void prepare(const PlotScan& look, const LookSources* sources, ScanReport& report);
 
-  // The look's measurements, their approximate positions in the tracking frame and a k-d tree
-  // over them (2-D when a 3-D look holds a polar plot without height: such a plot lies at
-  // elevation 0, kilometres under its target, so the look is searched on the plane).
+  // The look's measurements, their approximate positions in the tracking frame and a grid
+  // index over them, its cells the look's median plot-cloud radius, which is about a gate's
+  // (2-D when a 3-D look holds a polar plot without height: such a plot lies at elevation 0,
+  // kilometres under its target, so the look is searched on the plane).
   const std::vector<PlotMeasurement>& plots() const { return plots_; }
   const std::vector<Eigen::Vector3d>& positions() const { return positions_; }
-  const PlotIndex& index() const { return index_; }
+  const GridIndex& index() const { return index_; }
   std::uint32_t sensor() const { return sensor_; }
   /// The antenna's sweep at the look's end [rad].
   double sweep() const { return sweep_; }
@@ -93,8 +93,7 @@ class Preprocessing {
   double sweep_ = 0.0;
   std::vector<PlotMeasurement> plots_;
   std::vector<Eigen::Vector3d> positions_;
-  PlotIndex index_;
-  GridIndex cloud_index_;  // the cloud test's: its radii have one scale per look
+  GridIndex index_;
   std::vector<double> cloud_radii_, cloud_median_;  // per plot; workspace
   std::vector<std::uint8_t> crowd_;
   std::vector<std::uint8_t> rejected_;

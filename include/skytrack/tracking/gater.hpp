@@ -1,10 +1,10 @@
 #pragma once
 // The point tracker's gater: each track's validation gate round its IMM prediction, giving the
 // look's track-plot candidates (paper 003 §3.2). A track's search region comes from its
-// prediction at the middle of the batch; the k-d tree's candidates in it are tested in the
-// ellipsoidal gate at the track's own update time, the time of its nearest candidate plot,
-// so a rotating antenna's plots are used at the time they were measured. Also the cheap
-// search regions the pipeline cuts looks with (core/look.hpp).
+// prediction at the middle of the batch; the look's plots in it (Preprocessing::index) are
+// tested in the ellipsoidal gate at the track's own update time, the time of its nearest
+// candidate plot, so a rotating antenna's plots are used at the time they were measured.
+// Also the cheap search regions the pipeline cuts looks with (core/look.hpp).
 #include <cstdint>
 #include <span>
 #include <vector>
