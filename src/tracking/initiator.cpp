@@ -89,19 +89,21 @@ Initiator::Initiator(const config::InitiationSpec& spec, int dims, ChainManoeuvr
 
 const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
                                                const std::vector<PlotMeasurement>& plots,
-                                               const Coverage& covered) {
+                                               const Coverage& covered,
+                                               std::span<const Eigen::Vector3d> positions) {
   // A snapshot sensor: each batch is one revolution of sweep after the last.
   const double sweep = 2.0 * kHalfTurn * static_cast<double>(batch);
   snapshot_plots_ = plots;
   for (PlotMeasurement& p : snapshot_plots_) p.sweep = sweep;
   return step(batch, time, plots.empty() ? 0 : plots.front().sensor, sweep, snapshot_plots_,
-              covered);
+              covered, positions);
 }
 
 const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
                                                std::uint32_t sensor, double sweep,
                                                const std::vector<PlotMeasurement>& plots,
-                                               const Coverage& covered) {
+                                               const Coverage& covered,
+                                               std::span<const Eigen::Vector3d> positions) {
   completed_.clear();
   // This batch is a look at every seed and chain it covers that the beam has not passed
   // within the last half revolution (a chain predicted across the cut it was made at).
@@ -121,8 +123,11 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
       ++chain.looks;
     }
   }
-  positions_.clear();
-  for (const PlotMeasurement& plot : plots) positions_.push_back(approximate_position(plot));
+  positions_.assign(positions.begin(), positions.end());
+  if (positions_.size() != plots.size()) {
+    positions_.clear();
+    for (const PlotMeasurement& plot : plots) positions_.push_back(approximate_position(plot));
+  }
   used_.assign(plots.size(), 0);
   extend_chains(batch, plots);
   pair_with_seeds(batch, plots);
@@ -300,7 +305,9 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
     if (best < 0) continue;
     const Seed& seed = seeds_[best];
     Chain chain;
-    chain.plots = {seed.plot, plots[i]};
+    chain.plots.reserve(static_cast<std::size_t>(std::max(spec_.m, 2)));  // grows to M plots
+    chain.plots.push_back(seed.plot);
+    chain.plots.push_back(plots[i]);
     chain.position = positions_[i];
     chain.velocity = (positions_[i] - seed.position) / (plots[i].time - seed.plot.time);
     chain.time = plots[i].time;

@@ -100,6 +100,7 @@ void PointTracker::initiate(PointLook& look) {
   ScanReport& report = look.report;
   TrackFrame& frame = look.frame;
   std::vector<PlotMeasurement> unused;
+  std::vector<Eigen::Vector3d> unused_positions;
   look.initiation_plots.clear();
   int clouded = 0;
   for (std::size_t j = 0; j < pre.plots().size(); ++j) {
@@ -109,6 +110,7 @@ void PointTracker::initiate(PointLook& look) {
       continue;
     }
     unused.push_back(pre.plots()[j]);
+    unused_positions.push_back(pre.positions()[j]);
     look.initiation_plots.push_back(static_cast<int>(j));
   }
   if (clouded > 0) {
@@ -125,8 +127,8 @@ void PointTracker::initiate(PointLook& look) {
         return t.branch == BranchType::kFather && t.life.status == TrackStatus::kTentative;
       }));
   int refused = 0;
-  for (const Initiation& initiation :
-       initiator_.step(batches_, scan.time, pre.sensor(), pre.sweep(), unused, covered)) {
+  for (const Initiation& initiation : initiator_.step(
+           batches_, scan.time, pre.sensor(), pre.sweep(), unused, covered, unused_positions)) {
     if (hooks().take_chain(initiation, report, frame)) continue;
     if (tentative >= profile_.point.initiation.max_tentative) {
       ++refused;

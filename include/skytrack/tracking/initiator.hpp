@@ -8,6 +8,7 @@
 // Chains are cheap (no filter), so dense clutter costs seeds, not IMM tracks.
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include <Eigen/Core>
@@ -54,14 +55,17 @@ class Initiator {
   /// at `sweep` (the antenna's, PlotMeasurement::sweep). Seeds and chains age by the batches
   /// that cover them ("looks"), at most once per half revolution of their sensor's sweep, so
   /// a revolution reported in sectors counts once. Returns the chains completed by this batch.
+  /// `positions`: the plots' approximate_position, when the caller has them (else computed).
   const std::vector<Initiation>& step(std::uint64_t batch, double time, std::uint32_t sensor,
                                       double sweep, const std::vector<PlotMeasurement>& plots,
-                                      const Coverage& covered);
+                                      const Coverage& covered,
+                                      std::span<const Eigen::Vector3d> positions = {});
   /// The same for a snapshot sensor, whose batches are a look at everything (the plots'
   /// sweeps are set to one revolution per batch).
   const std::vector<Initiation>& step(std::uint64_t batch, double time,
                                       const std::vector<PlotMeasurement>& plots,
-                                      const Coverage& covered);
+                                      const Coverage& covered,
+                                      std::span<const Eigen::Vector3d> positions = {});
 
   /// Appends each candidate chain's search region at `time`: where its next plot may lie.
   void search_regions(double time, std::vector<SearchRegion>& out) const;
