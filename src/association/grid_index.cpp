@@ -86,33 +86,34 @@ GridIndex::Rows GridIndex::rows_around(const Eigen::Vector3d& centre,
           std::min(ny_ - 1, clamped(centre.y() + radius, y0_, ny_))};
 }
 
-void GridIndex::within(const Eigen::Vector3d& centre, double radius,
-                       std::vector<int>& out) const noexcept {
-  out.clear();
+template <class Visit>
+bool GridIndex::visit_within(const Eigen::Vector3d& centre, double radius,
+                             const Visit& visit) const noexcept {
   const Rows r = rows_around(centre, radius);
   const double bound = radius * radius;
   for (long iy = r.y0; iy <= r.y1; ++iy) {
     const std::size_t row = static_cast<std::size_t>(iy * nx_);
     const std::uint32_t end = start_[row + static_cast<std::size_t>(r.x1) + 1];
     for (std::uint32_t k = start_[row + static_cast<std::size_t>(r.x0)]; k < end; ++k) {
-      if (distance2(centre, points_[k]) <= bound) out.push_back(points_[k].index);
+      if (distance2(centre, points_[k]) <= bound && visit(points_[k].index)) return true;
     }
   }
+  return false;
+}
+
+void GridIndex::within(const Eigen::Vector3d& centre, double radius,
+                       std::vector<int>& out) const noexcept {
+  out.clear();
+  visit_within(centre, radius, [&](int index) {
+    out.push_back(index);
+    return false;
+  });
   std::sort(out.begin(), out.end());
 }
 
 bool GridIndex::more_than(const Eigen::Vector3d& centre, double radius, int count) const noexcept {
-  const Rows r = rows_around(centre, radius);
-  const double bound = radius * radius;
   int found = 0;
-  for (long iy = r.y0; iy <= r.y1; ++iy) {
-    const std::size_t row = static_cast<std::size_t>(iy * nx_);
-    const std::uint32_t end = start_[row + static_cast<std::size_t>(r.x1) + 1];
-    for (std::uint32_t k = start_[row + static_cast<std::size_t>(r.x0)]; k < end; ++k) {
-      if (distance2(centre, points_[k]) <= bound && ++found > count) return true;
-    }
-  }
-  return false;
+  return visit_within(centre, radius, [&](int) { return ++found > count; });
 }
 
 }  // namespace skytrack

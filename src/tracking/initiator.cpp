@@ -1,6 +1,7 @@
 #include "skytrack/tracking/initiator.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <tuple>
@@ -123,10 +124,12 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
       ++chain.looks;
     }
   }
-  positions_.assign(positions.begin(), positions.end());
-  if (positions_.size() != plots.size()) {
+  assert(positions.empty() || positions.size() == plots.size());
+  if (positions.empty()) {
     positions_.clear();
     for (const PlotMeasurement& plot : plots) positions_.push_back(approximate_position(plot));
+  } else {
+    positions_.assign(positions.begin(), positions.end());
   }
   used_.assign(plots.size(), 0);
   extend_chains(batch, plots);
@@ -243,7 +246,12 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
   if (seeds_.empty() || plots.empty()) return;
   // Seeds are kept in batch order. Each batch's seeds get their own index, searched with the
   // reach of that batch's age, so a young seed batch is not searched as far as the oldest.
+  // Every group is indexed in cells of the youngest group's reach (below) from the batch's
+  // first plot: an older group's search is bounded by the nearest seed found in a younger
+  // one, mostly within that reach, so it looks at a few small cells rather than one of its
+  // own wide ones.
   seed_groups_.clear();
+  double cell = std::numeric_limits<double>::infinity();
   for (std::size_t begin = 0; begin < seeds_.size();) {
     SeedGroup group{begin, begin, std::numeric_limits<double>::infinity()};
     for (; group.end < seeds_.size() && seeds_[group.end].batch == seeds_[begin].batch;
@@ -251,16 +259,10 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
       group.oldest = std::min(group.oldest, seeds_[group.end].plot.time);
       group.max_sigma = std::max(group.max_sigma, position_sigma(seeds_[group.end].plot));
     }
-    seed_groups_.push_back(group);
-    begin = group.end;
-  }
-  // Cells of the youngest group's reach (below) from the batch's first plot, for every group:
-  // an older group's search is bounded by the nearest seed found in a younger one, mostly
-  // within that reach, so it looks at a few small cells rather than one of its own wide ones.
-  double cell = std::numeric_limits<double>::infinity();
-  for (const SeedGroup& group : seed_groups_) {
     cell = std::min(cell, spec_.max_speed * std::max(plots.front().time - group.oldest, 0.0) +
                               3.0 * (2.0 * group.max_sigma) + 1.0);
+    seed_groups_.push_back(group);
+    begin = group.end;
   }
   if (seed_indices_.size() < seed_groups_.size()) seed_indices_.resize(seed_groups_.size());
   for (std::size_t g = 0; g < seed_groups_.size(); ++g) {

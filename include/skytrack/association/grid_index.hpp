@@ -5,8 +5,9 @@
 // searches have such a scale (a speed disc, a chain's gate), and so do a look's gates and
 // plot-cloud tests (a few plot sigmas); they make many queries per batch. A grid is built
 // in one counting pass and answers them with a few distance tests, where a k-d tree
-// (PlotIndex) walks its levels. A query wider than a cell reads a few more rows. Height, when used, is tested per plot,
-// not binned. Answers are exactly PlotIndex's (same arithmetic, sorted ascending).
+// (PlotIndex) walks its levels. A query wider than a cell reads a few more rows. Height, when used,
+// is tested per plot, not binned. Answers are exactly PlotIndex's (same arithmetic, sorted
+// ascending).
 //
 // Memory: the buffers grow to the largest build and are reused; within() allocates only
 // if `out` has to grow.
@@ -45,6 +46,11 @@ class GridIndex {
   long cell_of(double value, double low) const noexcept;
   Rows rows_around(const Eigen::Vector3d& centre, double radius) const noexcept;
   double distance2(const Eigen::Vector3d& centre, const Entry& e) const noexcept;
+  /// Calls visit(index) for each plot within `radius` of `centre`, in cell order, until it
+  /// returns true; returns whether it did.
+  template <class Visit>
+  bool visit_within(const Eigen::Vector3d& centre, double radius,
+                    const Visit& visit) const noexcept;
 
   std::vector<Entry> points_;         // in cell order
   std::vector<std::uint32_t> start_;  // points_[start_[c], start_[c + 1]) lie in cell c
