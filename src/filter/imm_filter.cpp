@@ -167,9 +167,31 @@ void ImmFilter::predict_certain(const ImmEstimate& posterior, int mode, double t
 
 void ImmFilter::predict_modes(const ImmEstimate& posterior, double time, int certain,
                               ImmEstimate& out) const noexcept {
+  assert(&out != &posterior);
+  const double dt = time - posterior.time;
+  // The chain may switch once per interval, so a prediction over several intervals is made
+  // in as many steps, the modes interacting between them: a turn can then begin within the
+  // prediction, and the turn mode's estimate spreads over its possible onsets.
+  const double intervals = transition_interval_ > 0.0 ? dt / transition_interval_ : 0.0;
+  if (certain >= 0 || mode_count() == 1 || !(intervals > 1.0)) {
+    predict_step(posterior, time, certain, out);
+    return;
+  }
+  const int steps = static_cast<int>(std::ceil(std::min(intervals, double{kMaxPredictionSteps})));
+  ImmEstimate between[2];
+  const ImmEstimate* from = &posterior;
+  for (int k = 1; k < steps; ++k) {
+    ImmEstimate& to = between[k % 2];
+    predict_step(*from, posterior.time + dt * k / steps, -1, to);
+    from = &to;
+  }
+  predict_step(*from, time, -1, out);
+}
+
+void ImmFilter::predict_step(const ImmEstimate& posterior, double time, int certain,
+                             ImmEstimate& out) const noexcept {
   const int n = mode_count();
   assert(static_cast<int>(posterior.modes.size()) == n && posterior.probabilities.size() == n);
-  assert(&out != &posterior);
   out.time = time;
   out.failed_modes = 0;
   out.modes.resize(models_.size());

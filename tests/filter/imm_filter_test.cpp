@@ -35,38 +35,6 @@ ImmEstimate hand_posterior() {
   return posterior;
 }
 
-TEST(ImmFilter, MarkovMatrixScalesWithThePredictionInterval) {
-  // GIVEN p = [0.9 0.1; 0.2 0.8] given per 4 s
-  Eigen::MatrixXd p(2, 2);
-  p << 0.9, 0.1, 0.2, 0.8;
-  const auto filter = ImmFilter::create({ConstantVelocity{0.0, 1.0}, ConstantVelocity{1.0, 1.0}},
-                                        {"quiet", "noisy"}, p, test::layout_2d(), {}, 4.0);
-  ASSERT_TRUE(filter) << filter.error().message;
-  const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(2, 2);
-  // THEN 0 s switches nothing, 4 s is P, 8 s is P^2, 2 s is halfway between I and P, and
-  // 6 s is P (I + (P - I) / 2); a backward prediction switches nothing.
-  EXPECT_LT((filter->transition_over(0.0) - identity).norm(), 1e-15);
-  EXPECT_LT((filter->transition_over(4.0) - p).norm(), 1e-15);
-  EXPECT_LT((filter->transition_over(8.0) - p * p).norm(), 1e-15);
-  Eigen::MatrixXd half(2, 2);
-  half << 0.95, 0.05, 0.1, 0.9;
-  EXPECT_LT((filter->transition_over(2.0) - half).norm(), 1e-15);
-  EXPECT_LT((filter->transition_over(6.0) - p * half).norm(), 1e-15);
-  EXPECT_LT((filter->transition_over(-1.0) - identity).norm(), 1e-15);
-  // Every interval gives a stochastic matrix; a long one reaches the stationary mix (2/3, 1/3).
-  for (const double dt : {0.3, 3.9, 17.0, 1e6}) {
-    const Eigen::MatrixXd t = filter->transition_over(dt);
-    EXPECT_LT((t.rowwise().sum() - Eigen::Vector2d::Ones()).norm(), 1e-12) << dt;
-    EXPECT_GE(t.minCoeff(), 0.0) << dt;
-  }
-  EXPECT_NEAR(filter->transition_over(1e6)(1, 0), 2.0 / 3.0, 1e-9);
-  // AND predict mixes with the interval's matrix: c = T(dt)' mu.
-  const ImmEstimate predicted = filter->predict(hand_posterior(), 2.0);
-  EXPECT_NEAR(predicted.probabilities[0], 0.95 * 0.7 + 0.1 * 0.3, 1e-12);
-  // WITHOUT an interval the matrix applies once per prediction, whatever its length.
-  EXPECT_LT((two_cv_modes().transition_over(0.5) - p).norm(), 1e-15);
-}
-
 TEST(ImmFilter, OneStepMatchesHandComputation) {
   // GIVEN p = [0.9 0.1; 0.2 0.8], mu = (0.7, 0.3), state [x vx y vy]
   //   mode 1 (CV, q = 0): (0, 10, 0, 0),  P = diag(4, 1, 4, 1)

@@ -45,6 +45,9 @@
 namespace skytrack {
 
 inline constexpr int kMaxImmModes = 32;
+/// Bounds the cost of a long coast: beyond this many steps, the Markov matrix over each
+/// longer step still gives the modes' probabilities.
+inline constexpr int kMaxPredictionSteps = 8;
 
 struct ImmEstimate {
   std::vector<Gaussian> modes;     // one per mode, all in the filter's StateLayout
@@ -104,7 +107,9 @@ class ImmFilter {
                       double time) const;
 
   /// Mixing (eq. 1-2) and per-mode prediction to `time`; the result's probabilities are the
-  /// predicted c_j. The Markov matrix is the one for the interval (transition_over).
+  /// predicted c_j. A prediction over more than one transition interval is made in equal
+  /// steps of at most one interval, mixing before each (a manoeuvre can begin within it);
+  /// each step's Markov matrix is transition_over its length.
   ImmEstimate predict(const ImmEstimate& posterior, double time) const noexcept;
   /// The same, written over `out` (another object than `posterior`), whose storage is reused.
   void predict(const ImmEstimate& posterior, double time, ImmEstimate& out) const noexcept;
@@ -159,8 +164,14 @@ class ImmFilter {
   int mode_count() const { return static_cast<int>(models_.size()); }
 
  private:
+  /// A prediction longer than the transition interval is made in steps of at most one
+  /// interval (at most kMaxPredictionSteps of them), mixing between steps; `certain` >= 0
+  /// predicts in one step.
   void predict_modes(const ImmEstimate& posterior, double time, int certain,
                      ImmEstimate& out) const noexcept;
+  /// Mixing and per-mode prediction over one step, the Markov matrix taken over its length.
+  void predict_step(const ImmEstimate& posterior, double time, int certain,
+                    ImmEstimate& out) const noexcept;
   /// The kept shapes, remade when `measurement` has another model than the last plot's.
   void shape(const ImmEstimate& predicted, const PlotMeasurement& measurement,
              HypothesisShapes& shapes) const noexcept;
