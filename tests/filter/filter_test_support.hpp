@@ -2,6 +2,7 @@
 // Helpers shared by the filter tests.
 #include <Eigen/Core>
 
+#include "skytrack/filter/imm_filter.hpp"
 #include "skytrack/filter/state.hpp"
 #include "skytrack/measurement/plot_measurement.hpp"
 
@@ -37,6 +38,19 @@ inline Gaussian gaussian(std::initializer_list<double> mean, const StateMat& cov
   for (double v : mean) g.mean[i++] = v;
   g.covariance = covariance;
   return g;
+}
+
+/// Two modes' estimates at time 0 that differ, mu = (0.7, 0.3): the scenario of the IMM's
+/// hand computation.
+inline ImmEstimate two_mode_posterior() {
+  ImmEstimate posterior;
+  StateMat P1 = StateMat::Zero(4, 4), P2 = StateMat::Zero(4, 4);
+  P1.diagonal() << 4, 1, 4, 1;
+  P2.diagonal() << 9, 4, 9, 4;
+  posterior.modes = {gaussian({0, 10, 0, 0}, P1), gaussian({2, 12, 1, -1}, P2)};
+  posterior.probabilities = Eigen::Vector2d(0.7, 0.3);
+  posterior.time = 0.0;
+  return posterior;
 }
 
 }  // namespace skytrack::test

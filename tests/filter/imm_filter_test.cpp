@@ -23,18 +23,6 @@ ImmFilter two_cv_modes() {
   return *filter;
 }
 
-/// The scenario of the hand computation: two CV modes (q = 0 and q = 1), mu = (0.7, 0.3).
-ImmEstimate hand_posterior() {
-  ImmEstimate posterior;
-  StateMat P1 = StateMat::Zero(4, 4), P2 = StateMat::Zero(4, 4);
-  P1.diagonal() << 4, 1, 4, 1;
-  P2.diagonal() << 9, 4, 9, 4;
-  posterior.modes = {test::gaussian({0, 10, 0, 0}, P1), test::gaussian({2, 12, 1, -1}, P2)};
-  posterior.probabilities = Eigen::Vector2d(0.7, 0.3);
-  posterior.time = 0.0;
-  return posterior;
-}
-
 TEST(ImmFilter, OneStepMatchesHandComputation) {
   // GIVEN p = [0.9 0.1; 0.2 0.8], mu = (0.7, 0.3), state [x vx y vy]
   //   mode 1 (CV, q = 0): (0, 10, 0, 0),  P = diag(4, 1, 4, 1)
@@ -67,7 +55,7 @@ TEST(ImmFilter, OneStepMatchesHandComputation) {
   //        .                  .                   .                     1.878024333589953]
   const ImmFilter filter = two_cv_modes();
   // WHEN predicted to t = 1 and updated with the one plot, beta = 1
-  const ImmEstimate predicted = filter.predict(hand_posterior(), 1.0);
+  const ImmEstimate predicted = filter.predict(test::two_mode_posterior(), 1.0);
   PlotMeasurement plot = test::cartesian_xy(13.0, 0.5, 2.0);
   plot.time = 1.0;
   const std::array<PlotHypothesis, 1> hypotheses = {filter.hypothesise(predicted, plot)};
@@ -202,7 +190,7 @@ TEST(ImmFilter, ProbabilitiesStayNormalisedUnderClutterAndMisses) {
 TEST(ImmFilter, IsolatedTrackModeProbabilitiesEqualTheImmPdaForm) {
   // GIVEN two plots, PDA weights for an isolated track with PD, PG, lambda
   const ImmFilter filter = two_cv_modes();
-  const ImmEstimate predicted = filter.predict(hand_posterior(), 1.0);
+  const ImmEstimate predicted = filter.predict(test::two_mode_posterior(), 1.0);
   const std::array<PlotHypothesis, 2> hypotheses = {
       filter.hypothesise(predicted, test::cartesian_xy(13.0, 0.5, 2.0)),
       filter.hypothesise(predicted, test::cartesian_xy(9.0, -2.0, 2.0))};
@@ -230,7 +218,7 @@ TEST(ImmFilter, IsolatedTrackModeProbabilitiesEqualTheImmPdaForm) {
 TEST(ImmFilter, MissedDetectionKeepsPredictedProbabilities) {
   // GIVEN no plot (beta_0 = 1); THEN mu = c and every mode keeps its prediction
   const ImmFilter filter = two_cv_modes();
-  const ImmEstimate predicted = filter.predict(hand_posterior(), 1.0);
+  const ImmEstimate predicted = filter.predict(test::two_mode_posterior(), 1.0);
   const ImmEstimate posterior = filter.update(predicted, {}, {}, 1.0, 0.9, 0.99, 1e-6);
   EXPECT_NEAR(posterior.probabilities[0], 0.69, 1e-12);
   EXPECT_EQ(posterior.modes[1].mean, predicted.modes[1].mean);
@@ -239,7 +227,7 @@ TEST(ImmFilter, MissedDetectionKeepsPredictedProbabilities) {
 TEST(ImmFilter, NumericFailureKeepsThatModesPredictionAndIsFlagged) {
   // GIVEN a prediction whose mode 2 covariance is broken (negative variance)
   const ImmFilter filter = two_cv_modes();
-  ImmEstimate predicted = filter.predict(hand_posterior(), 1.0);
+  ImmEstimate predicted = filter.predict(test::two_mode_posterior(), 1.0);
   predicted.modes[1].covariance = -StateMat::Identity(4, 4) * 100.0;
   const std::array<PlotHypothesis, 1> hypotheses = {
       filter.hypothesise(predicted, test::cartesian_xy(13.0, 0.5, 2.0))};
@@ -303,7 +291,7 @@ TEST(ImmFilter, PredictCertainEqualsTheFullPredictionOfAOneModePosterior) {
   auto filter = ImmFilter::create({ConstantVelocity{1.0, 1.0}, CoordinatedTurn{0.05, 3.0, 1.0}},
                                   {"cv", "ct"}, transition, test::layout_2d(), {});
   ASSERT_TRUE(filter);
-  ImmEstimate posterior = hand_posterior();
+  ImmEstimate posterior = test::two_mode_posterior();
   posterior.probabilities = Eigen::Vector2d(0.4, 0.6);
   // WHEN it is predicted 4 s on as certain of the turn, and the same posterior made certain
   // by hand (mu = (0, 1), every mode the turn's estimate) goes through the full IMM prediction

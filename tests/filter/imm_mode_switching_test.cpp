@@ -8,17 +8,6 @@
 namespace skytrack {
 namespace {
 
-/// Two modes' estimates that differ, mu = (0.7, 0.3).
-ImmEstimate posterior_of_two_modes() {
-  ImmEstimate posterior;
-  StateMat P1 = StateMat::Zero(4, 4), P2 = StateMat::Zero(4, 4);
-  P1.diagonal() << 4, 1, 4, 1;
-  P2.diagonal() << 9, 4, 9, 4;
-  posterior.modes = {test::gaussian({0, 10, 0, 0}, P1), test::gaussian({2, 12, 1, -1}, P2)};
-  posterior.probabilities = Eigen::Vector2d(0.7, 0.3);
-  return posterior;
-}
-
 TEST(ImmFilter, MarkovMatrixScalesWithThePredictionInterval) {
   // GIVEN p = [0.9 0.1; 0.2 0.8] given per 4 s
   Eigen::MatrixXd p(2, 2);
@@ -45,7 +34,7 @@ TEST(ImmFilter, MarkovMatrixScalesWithThePredictionInterval) {
   }
   EXPECT_NEAR(filter->transition_over(1e6)(1, 0), 2.0 / 3.0, 1e-9);
   // AND predict mixes with the interval's matrix: c = T(dt)' mu.
-  const ImmEstimate predicted = filter->predict(posterior_of_two_modes(), 2.0);
+  const ImmEstimate predicted = filter->predict(test::two_mode_posterior(), 2.0);
   EXPECT_NEAR(predicted.probabilities[0], 0.95 * 0.7 + 0.1 * 0.3, 1e-12);
   // WITHOUT an interval the matrix applies once per prediction, whatever its length.
   const auto per_prediction =
@@ -64,7 +53,7 @@ TEST(ImmFilter, APredictionOverSeveralIntervalsIsMadeInStepsThatCompose) {
       ImmFilter::create({ConstantVelocity{1.0, 1.0}, CoordinatedTurn{0.05, 3.0, 1.0}}, {"cv", "ct"},
                         p, test::layout_2d(), {}, 4.0);
   ASSERT_TRUE(filter) << filter.error().message;
-  const ImmEstimate posterior = posterior_of_two_modes();
+  const ImmEstimate posterior = test::two_mode_posterior();
   // WHEN it is predicted 8 s on in one call, and 4 s then 4 s more
   const ImmEstimate whole = filter->predict(posterior, 8.0);
   const ImmEstimate twice = filter->predict(filter->predict(posterior, 4.0), 8.0);
