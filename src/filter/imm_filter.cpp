@@ -369,9 +369,18 @@ void ImmFilter::update(const ImmEstimate& predicted, std::span<const PlotHypothe
       out.modes[j] = predicted.modes[j];
       continue;
     }
+    // Mode j's own weights, P(theta_i | M_j, Z) ~ beta_i N_ij / L_i and beta_0 (normalised in
+    // pda_mixture): a plot that fits this mode far better than the track's mixture moves
+    // this mode even when the track as a whole gives it little weight.
+    const auto mode_beta = [&](std::size_t i) {
+      const double b = beta(i);
+      if (b <= 0.0) return 0.0;
+      const double log_ratio = innovation_at(i, j).log_likelihood - hypotheses[i].log_likelihood;
+      return std::isfinite(log_ratio) ? b * std::exp(log_ratio) : 0.0;
+    };
     out.modes[j] = filter_detail::pda_mixture(
         predicted.modes[j], count,
-        [&](std::size_t i) -> const Innovation& { return innovation_at(i, j); }, beta, beta0);
+        [&](std::size_t i) -> const Innovation& { return innovation_at(i, j); }, mode_beta, beta0);
   }
   const double norm = out.probabilities.sum();  // eq. 4
   if (norm > 0.0 && std::isfinite(norm)) {

@@ -187,7 +187,7 @@ TEST(ImmFilter, ProbabilitiesStayNormalisedUnderClutterAndMisses) {
   }
 }
 
-TEST(ImmFilter, IsolatedTrackModeProbabilitiesEqualTheImmPdaForm) {
+TEST(ImmFilter, IsolatedTrackIsTheImmPdaf) {
   // GIVEN two plots, PDA weights for an isolated track with PD, PG, lambda
   const ImmFilter filter = two_cv_modes();
   const ImmEstimate predicted = filter.predict(test::two_mode_posterior(), 1.0);
@@ -208,11 +208,60 @@ TEST(ImmFilter, IsolatedTrackModeProbabilitiesEqualTheImmPdaForm) {
     weight[j] = predicted.probabilities[j] * ((1.0 - pd * pg) + pd / lambda * sum);
   }
   EXPECT_NEAR(posterior.probabilities[0], weight[0] / (weight[0] + weight[1]), 1e-12);
+  // AND each mode's state is that of its mode-matched PDAF, weighted by its own likelihoods
+  for (int j = 0; j < 2; ++j) {
+    std::array<double, 2> mode_likelihoods{};
+    std::array<Innovation, 2> innovations;
+    for (std::size_t i = 0; i < 2; ++i) {
+      innovations[i] = hypotheses[i].per_mode[static_cast<std::size_t>(j)];
+      mode_likelihoods[i] = std::exp(innovations[i].log_likelihood);
+    }
+    std::array<double, 2> mode_beta{};
+    const double mode_miss = pda_weights(mode_likelihoods, pd, pg, lambda, mode_beta);
+    const Gaussian pdaf =
+        pda_update(predicted.modes[static_cast<std::size_t>(j)], innovations, mode_beta, mode_miss);
+    const Gaussian& imm = posterior.modes[static_cast<std::size_t>(j)];
+    EXPECT_LT((imm.mean - pdaf.mean).norm(), 1e-9) << "mode " << j;
+    EXPECT_LT((imm.covariance - pdaf.covariance).norm(), 1e-9 * pdaf.covariance.norm())
+        << "mode " << j;
+  }
   // AND unusable weights (all zero) fall back to exactly this isolated-track form
   const std::array<double, 2> zero = {0.0, 0.0};
   const ImmEstimate fallback = filter.update(predicted, hypotheses, zero, 0.0, pd, pg, lambda);
   EXPECT_NEAR(fallback.probabilities[0], posterior.probabilities[0], 1e-12);
   EXPECT_LT((filter.combine(fallback).mean - filter.combine(posterior).mean).norm(), 1e-12);
+}
+
+TEST(ImmFilter, APlotThatFitsOnlyTheTurnMovesTheTurnModeThoughTheTrackWeighsItLow) {
+  // GIVEN CV + a 4 g left turn, a track flying east at 250 m/s predicted 6 s on, a plot at
+  // the straight prediction weighed 0.9 (say clutter) and one at the turn's weighed 0.1
+  Eigen::MatrixXd p(2, 2);
+  p << 0.9, 0.1, 0.2, 0.8;
+  const auto filter =
+      ImmFilter::create({ConstantVelocity{2.0, 1.0}, CoordinatedTurn{0.157, 6.0, 1.0}},
+                        {"cv", "ct"}, p, test::layout_2d(), {});
+  ASSERT_TRUE(filter);
+  StateMat start = StateMat::Zero(4, 4);
+  start.diagonal() << 900, 100, 900, 100;
+  const ImmEstimate predicted = filter->predict(
+      filter->initial(test::gaussian({0, 250, 0, 0}, start), Eigen::Vector2d(0.8, 0.2), 0.0), 6.0);
+  const Eigen::VectorXd straight = predicted.modes[0].mean, turn = predicted.modes[1].mean;
+  ASSERT_GT(std::hypot(straight[0] - turn[0], straight[2] - turn[2]), 500.0);
+  const std::array<PlotHypothesis, 2> hypotheses = {
+      filter->hypothesise(predicted, test::cartesian_xy(straight[0], straight[2], 30.0)),
+      filter->hypothesise(predicted, test::cartesian_xy(turn[0], turn[2], 30.0))};
+  const std::array<double, 2> beta = {0.9, 0.1};
+  // WHEN updated
+  const ImmEstimate posterior = filter->update(predicted, hypotheses, beta, 0.0, 0.9, 0.99, 1e-6);
+  // THEN each mode follows the plot it explains (within a plot sigma), not the track's
+  // likelier plot: the turn mode keeps the turn
+  const auto distance = [](const Gaussian& g, const Eigen::VectorXd& at) {
+    return std::hypot(g.mean[0] - at[0], g.mean[2] - at[2]);
+  };
+  EXPECT_LT(distance(posterior.modes[0], straight), 30.0);
+  EXPECT_LT(distance(posterior.modes[1], turn), 30.0);
+  // AND the mode probabilities are the beta-weighted ones (unchanged by this)
+  EXPECT_NEAR(posterior.probabilities.sum(), 1.0, 1e-12);
 }
 
 TEST(ImmFilter, MissedDetectionKeepsPredictedProbabilities) {

@@ -4,7 +4,8 @@
 //   mixing      c_j = sum_i p_ij mu_i,  mu_i|j = p_ij mu_i / c_j                (eq. 1-2)
 //               x0j = sum_i mu_i|j x_i,  P0j = sum_i mu_i|j (P_i + dx dx')
 //   prediction  each mode with its own motion model (motion/motion_model.hpp)
-//   update      per mode: the PDA update with the track's JPDA weights (filter/pda.hpp)
+//   update      per mode: the PDA update (filter/pda.hpp) with the mode's own weights,
+//               beta_ij ~ beta_i N_ij / L_i and beta_0j ~ beta_0 (below)
 //   mode prob.  eq. 3-5 extended to data association, see below
 //   output      x = sum_j mu_j x_j,  P = sum_j mu_j (P_j + dx dx')               (eq. 6-7)
 //
@@ -22,6 +23,10 @@
 //     Bar-Shalom 1989, IEEE Trans. AES-25(2)), since beta_0 and beta_i share its normaliser;
 //   * in a JPDA cluster uses the same marginals as the state update, so a plot that another
 //     track most likely owns does not drive this track's mode probabilities.
+// Each mode's state is updated with the same decomposition: given M_j, the event "plot i"
+// has probability P(theta_i | M_j, Z) = beta_i (N_ij / L_i) / (mu_j / c_j), and the miss
+// beta_0 / (mu_j / c_j). For an isolated track these are the mode-matched PDAF's own
+// weights (IMM-PDAF); with one mode, or one plot and no miss, they are the track's beta.
 // So the implemented form is the beta-weighted one; PD, PG and lambda are used only when the
 // given weights are unusable (sum <= 0 or not finite): the track is then treated as isolated
 // and weighted by pda_weights.
