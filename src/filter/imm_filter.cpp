@@ -4,6 +4,7 @@
 #include "skytrack/filter/imm_filter.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -16,6 +17,8 @@ namespace skytrack {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+/// A track's plot weights per mode kept on the stack (more plots are weighed again).
+constexpr std::size_t kKeptWeights = 16;
 
 /// moment_match at a compile-time state size N.
 template <int N, class WeightAt>
@@ -350,18 +353,26 @@ void ImmFilter::update(const ImmEstimate& predicted, std::span<const PlotHypothe
   out.modes.resize(models_.size());
   out.probabilities.resize(n);
   for (int j = 0; j < n; ++j) {
+    // Mode j's own weights, P(theta_i | M_j, Z) ~ beta_i N_ij / L_i and beta_0 (normalised in
+    // pda_mixture): a plot that fits this mode far better than the track's mixture moves
+    // this mode even when the track as a whole gives it little weight.
+    const auto plot_weight = [&](std::size_t i) {
+      const double b = beta(i);
+      if (b <= 0.0) return 0.0;
+      const double log_ratio = innovation_at(i, j).log_likelihood - hypotheses[i].log_likelihood;
+      return std::isfinite(log_ratio) ? b * std::exp(log_ratio) : 0.0;
+    };
+    std::array<double, kKeptWeights> kept{};
     bool failed = false;
     double weight = beta0;  // beta_0 + sum_i beta_i N_ij / L_i
     for (std::size_t i = 0; i < count; ++i) {
-      const Innovation& innovation = innovation_at(i, j);
-      const double b = beta(i);
-      if (b <= 0.0) continue;
-      if (!innovation.ok) {
+      if (beta(i) > 0.0 && !innovation_at(i, j).ok) {
         failed = true;
         continue;
       }
-      const double log_ratio = innovation.log_likelihood - hypotheses[i].log_likelihood;
-      if (std::isfinite(log_ratio)) weight += b * std::exp(log_ratio);
+      const double w = plot_weight(i);
+      if (i < kKeptWeights) kept[i] = w;
+      weight += w;
     }
     out.probabilities[j] = predicted.probabilities[j] * weight;
     if (failed) {
@@ -369,18 +380,10 @@ void ImmFilter::update(const ImmEstimate& predicted, std::span<const PlotHypothe
       out.modes[j] = predicted.modes[j];
       continue;
     }
-    // Mode j's own weights, P(theta_i | M_j, Z) ~ beta_i N_ij / L_i and beta_0 (normalised in
-    // pda_mixture): a plot that fits this mode far better than the track's mixture moves
-    // this mode even when the track as a whole gives it little weight.
-    const auto mode_beta = [&](std::size_t i) {
-      const double b = beta(i);
-      if (b <= 0.0) return 0.0;
-      const double log_ratio = innovation_at(i, j).log_likelihood - hypotheses[i].log_likelihood;
-      return std::isfinite(log_ratio) ? b * std::exp(log_ratio) : 0.0;
-    };
     out.modes[j] = filter_detail::pda_mixture(
         predicted.modes[j], count,
-        [&](std::size_t i) -> const Innovation& { return innovation_at(i, j); }, mode_beta, beta0);
+        [&](std::size_t i) -> const Innovation& { return innovation_at(i, j); },
+        [&](std::size_t i) { return i < kKeptWeights ? kept[i] : plot_weight(i); }, beta0);
   }
   const double norm = out.probabilities.sum();  // eq. 4
   if (norm > 0.0 && std::isfinite(norm)) {
