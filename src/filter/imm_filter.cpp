@@ -173,19 +173,25 @@ void ImmFilter::predict_modes(const ImmEstimate& posterior, double time, int cer
   assert(&out != &posterior);
   const double dt = time - posterior.time;
   // The chain may switch once per interval, so a prediction over several intervals is made
-  // in as many steps, the modes interacting between them: a turn can then begin within the
-  // prediction, and the turn mode's estimate spreads over its possible onsets.
+  // interval by interval (the remainder last), the modes interacting between them: a turn
+  // can then begin within the prediction, and the turn mode's estimate spreads over its
+  // possible onsets. A remainder near zero mixes with a Markov matrix near I, so the
+  // prediction is continuous in dt.
   const double intervals = transition_interval_ > 0.0 ? dt / transition_interval_ : 0.0;
   if (certain >= 0 || mode_count() == 1 || !(intervals > 1.0)) {
     predict_step(posterior, time, certain, out);
     return;
   }
-  const int steps = static_cast<int>(std::ceil(std::min(intervals, double{kMaxPredictionSteps})));
+  const int whole = static_cast<int>(std::min(std::floor(intervals), double{kMaxPredictionSteps}));
+  const double step =
+      intervals > kMaxPredictionSteps ? dt / kMaxPredictionSteps : transition_interval_;
   ImmEstimate between[2];
   const ImmEstimate* from = &posterior;
-  for (int k = 1; k < steps; ++k) {
+  for (int k = 1; k <= whole; ++k) {
+    const double at = posterior.time + step * k;
+    if (!(at < time)) break;
     ImmEstimate& to = between[k % 2];
-    predict_step(*from, posterior.time + dt * k / steps, -1, to);
+    predict_step(*from, at, -1, to);
     from = &to;
   }
   predict_step(*from, time, -1, out);

@@ -66,14 +66,22 @@ TEST(ImmFilter, APredictionOverSeveralIntervalsIsMadeInStepsThatCompose) {
   const Eigen::Vector2d c = (p * p).transpose() * posterior.probabilities;
   EXPECT_NEAR(whole.probabilities[0], c[0], 1e-12);
   EXPECT_NEAR(whole.probabilities[1], c[1], 1e-12);
-  // AND a 6 s prediction is two equal steps of 3 s: c = (T(3)^2)' mu, T(3) = I + (P - I) 3/4
-  const Eigen::MatrixXd t3 =
-      Eigen::MatrixXd::Identity(2, 2) + 0.75 * (p - Eigen::MatrixXd::Identity(2, 2));
-  const Eigen::Vector2d c6 = (t3 * t3).transpose() * posterior.probabilities;
+  // AND a 6 s prediction is one interval, then the 2 s left: its priors are the chain's over
+  // 6 s, c = T(6)' mu (transition_over), and its estimates those of 4 s then 2 s
+  const Eigen::Vector2d c6 = filter->transition_over(6.0).transpose() * posterior.probabilities;
   const ImmEstimate six = filter->predict(posterior, 6.0);
   EXPECT_NEAR(six.probabilities[0], c6[0], 1e-12);
-  const ImmEstimate steps = filter->predict(filter->predict(posterior, 3.0), 6.0);
-  EXPECT_LT((six.modes[1].mean - steps.modes[1].mean).norm(), 1e-9);
+  const ImmEstimate steps = filter->predict(filter->predict(posterior, 4.0), 6.0);
+  for (std::size_t j = 0; j < 2; ++j) {
+    EXPECT_LT((six.modes[j].mean - steps.modes[j].mean).norm(), 1e-9);
+  }
+  // AND just over one interval is just over one step: 4.001 s differs from 4 s by no more
+  // than the motion over the extra millisecond (the prediction is continuous in dt)
+  const ImmEstimate over = filter->predict(posterior, 4.001);
+  const ImmEstimate at = filter->predict(posterior, 4.0);
+  for (std::size_t j = 0; j < 2; ++j) {
+    EXPECT_LT((over.modes[j].mean - at.modes[j].mean).norm(), 0.05);
+  }
 }
 
 TEST(ImmFilter, ATurnBegunWithinALongPredictionIsLikelierThanWithOneSwitch) {

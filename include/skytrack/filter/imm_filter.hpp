@@ -112,9 +112,10 @@ class ImmFilter {
                       double time) const;
 
   /// Mixing (eq. 1-2) and per-mode prediction to `time`; the result's probabilities are the
-  /// predicted c_j. A prediction over more than one transition interval is made in equal
-  /// steps of at most one interval, mixing before each (a manoeuvre can begin within it);
-  /// each step's Markov matrix is transition_over its length.
+  /// predicted c_j. A prediction over more than one transition interval is made interval by
+  /// interval, the remainder last, mixing before each step (a manoeuvre can begin within
+  /// it); each step's Markov matrix is transition_over its length, so c is transition_over
+  /// the whole prediction.
   ImmEstimate predict(const ImmEstimate& posterior, double time) const noexcept;
   /// The same, written over `out` (another object than `posterior`), whose storage is reused.
   void predict(const ImmEstimate& posterior, double time, ImmEstimate& out) const noexcept;
@@ -169,9 +170,9 @@ class ImmFilter {
   int mode_count() const { return static_cast<int>(models_.size()); }
 
  private:
-  /// A prediction longer than the transition interval is made in steps of at most one
-  /// interval (at most kMaxPredictionSteps of them), mixing between steps; `certain` >= 0
-  /// predicts in one step.
+  /// A prediction longer than the transition interval is made in steps of one interval and
+  /// the remainder (at most kMaxPredictionSteps equal steps), mixing between steps;
+  /// `certain` >= 0 predicts in one step.
   void predict_modes(const ImmEstimate& posterior, double time, int certain,
                      ImmEstimate& out) const noexcept;
   /// Mixing and per-mode prediction over one step, the Markov matrix taken over its length.
