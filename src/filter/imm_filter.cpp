@@ -19,6 +19,9 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 /// A track's plot weights per mode kept on the stack (more plots are weighed again).
 constexpr std::size_t kKeptWeights = 16;
+/// Bounds the cost of a long coast: beyond this many steps, the Markov matrix over each
+/// longer step still gives the modes' probabilities.
+constexpr int kMaxPredictionSteps = 8;
 
 /// moment_match at a compile-time state size N.
 template <int N, class WeightAt>

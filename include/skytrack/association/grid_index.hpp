@@ -5,9 +5,9 @@
 // searches have such a scale (a speed disc, a chain's gate), and so do a look's gates and
 // plot-cloud tests (a few plot sigmas); they make many queries per batch. A grid is built
 // in one counting pass and answers them with a few distance tests, where a k-d tree
-// (PlotIndex) walks its levels. A query wider than a cell reads a few more rows. Height, when used,
-// is tested per plot, not binned. Answers are exactly PlotIndex's (same arithmetic, sorted
-// ascending).
+// (PlotIndex) walks its levels. A query wider than a cell reads a few more rows. Height,
+// when used, is tested per plot, not binned. Answers are exactly PlotIndex's (same
+// arithmetic, sorted ascending).
 //
 // Memory: the buffers grow to the largest build and are reused; within() allocates only
 // if `out` has to grow.

@@ -50,9 +50,6 @@
 namespace skytrack {
 
 inline constexpr int kMaxImmModes = 32;
-/// Bounds the cost of a long coast: beyond this many steps, the Markov matrix over each
-/// longer step still gives the modes' probabilities.
-inline constexpr int kMaxPredictionSteps = 8;
 
 struct ImmEstimate {
   std::vector<Gaussian> modes;     // one per mode, all in the filter's StateLayout
@@ -171,7 +168,7 @@ class ImmFilter {
 
  private:
   /// A prediction longer than the transition interval is made in steps of one interval and
-  /// the remainder (at most kMaxPredictionSteps equal steps), mixing between steps;
+  /// the remainder (at most 8 equal steps), mixing between steps;
   /// `certain` >= 0 predicts in one step.
   void predict_modes(const ImmEstimate& posterior, double time, int certain,
                      ImmEstimate& out) const noexcept;
