@@ -12,8 +12,9 @@ packages=(
   libcpp-httplib-dev
 )
 # --test: also what the test suite needs beyond the build: headless Chromium for the display's
-# browser test (tests/daemon/display_browser_test.cpp).
-[ "${1:-}" = "--test" ] && packages+=(chromium)
+# browser test (tests/daemon/display_browser_test.cpp), and tshark for the field-by-field check
+# of the ASTERIX decoder against Wireshark's dissector (tests/asterix/realdata_test.cpp).
+[ "${1:-}" = "--test" ] && packages+=(chromium tshark)
 
 missing=()
 for p in "${packages[@]}"; do
