@@ -69,8 +69,11 @@ void BirthProposalSampler::sample(std::span<Particle> out, NormalSampler& rng) c
         const ScanPlot& older = before_previous_[static_cast<std::size_t>(seeds_[s].older)];
         v = (p - noisy_position(older, rng)) / pair_dt_;
       } else {
-        v = Eigen::Vector2d(spec_.birth_velocity[0] + spec_.birth_velocity_sigma * rng.normal(),
-                            spec_.birth_velocity[1] + spec_.birth_velocity_sigma * rng.normal());
+        // Each draw is its own step, last argument first: the order GCC used when the figures were
+        // measured (C++ leaves the evaluation order of arguments unspecified).
+        const double e_y = rng.normal(), e_x = rng.normal();
+        v = Eigen::Vector2d(spec_.birth_velocity[0] + spec_.birth_velocity_sigma * e_x,
+                            spec_.birth_velocity[1] + spec_.birth_velocity_sigma * e_y);
       }
       out[k] = {p.x(), v.x(), p.y(), v.y()};
     }

@@ -18,7 +18,10 @@ TEST(GnnAssociator, PicksTheMapJointEventAndMurtysBest) {
   JpdaSolver solver;
   int compared = 0;
   for (int trial = 0; trial < 400; ++trial) {
-    const JpdaProblem problem = test::random_problem(tracks_of(rng), plots_of(rng), rng);
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const int plots = plots_of(rng), tracks = tracks_of(rng);
+    const JpdaProblem problem = test::random_problem(tracks, plots, rng);
     std::vector<test::JointEvent> events = test::brute_force_jpda(problem).events;
     if (events.empty()) continue;
     std::stable_sort(events.begin(), events.end(),

@@ -19,9 +19,13 @@ std::vector<Eigen::Vector3d> mixed_points(int n, std::mt19937_64& rng) {
   std::vector<Eigen::Vector3d> points;
   for (int i = 0; i < n; ++i) {
     if (i % 3 == 0) {
-      points.emplace_back(1000.0 + near(rng), -700.0 + near(rng), z(rng));
+      // Each draw is its own step, last argument first: the order GCC used when the scenes were
+      // measured (C++ leaves the evaluation order of arguments unspecified).
+      const double height = z(rng), dy = near(rng), dx = near(rng);
+      points.emplace_back(1000.0 + dx, -700.0 + dy, height);
     } else {
-      points.emplace_back(xy(rng), xy(rng), z(rng));
+      const double height = z(rng), y = xy(rng), x = xy(rng);
+      points.emplace_back(x, y, height);
     }
   }
   return points;
@@ -41,7 +45,8 @@ TEST(GridIndex, WithinMatchesBruteForceAndTheKdTreeAndMoreThanCountsItForAnyCell
         grid.build(points, dims, cell);
         tree.build(points, dims);
         for (int q = 0; q < 100; ++q) {
-          const Eigen::Vector3d centre(xy(rng), xy(rng), z(rng));
+          const double height = z(rng), y = xy(rng), x = xy(rng);
+          const Eigen::Vector3d centre(x, y, height);
           const double r = q % 10 == 0 ? 30.0 : radius(rng);  // some queries in the cluster
           const Eigen::Vector3d at = q % 10 == 0 ? points.empty() ? centre : points[0] : centre;
           grid.within(at, r, found);

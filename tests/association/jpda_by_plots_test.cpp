@@ -29,7 +29,10 @@ TEST(JpdaByPlots, MatchesBruteForceOnRandomClusters) {
   JpdaByPlots by_plots;
   int solved = 0, refused = 0;
   for (int trial = 0; trial < 600; ++trial) {
-    const JpdaProblem problem = test::random_problem(tracks_of(rng), plots_of(rng), rng);
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const int plots = plots_of(rng), tracks = tracks_of(rng);
+    const JpdaProblem problem = test::random_problem(tracks, plots, rng);
     const Eigen::MatrixXd w = weights_of(problem);
     if (!by_plots.plan(w)) {
       ++refused;

@@ -81,7 +81,10 @@ TEST(JpdaSolver, ExactMatchesBruteForceOnRandomSmallClusters) {
   std::uniform_int_distribution<int> tracks_of(1, 6), plots_of(1, 7);
   JpdaSolver solver(exact_everywhere());
   for (int trial = 0; trial < 600; ++trial) {
-    const JpdaProblem problem = test::random_problem(tracks_of(rng), plots_of(rng), rng);
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const int plots = plots_of(rng), tracks = tracks_of(rng);
+    const JpdaProblem problem = test::random_problem(tracks, plots, rng);
     const test::BruteForceJpda truth = test::brute_force_jpda(problem);
     const JpdaResult& result = solver.solve(problem);
     ASSERT_FALSE(result.approximated);
@@ -130,7 +133,8 @@ TEST(JpdaSolver, KBestWithEveryEventEqualsExact) {
   std::uniform_int_distribution<int> tracks_of(1, 5), plots_of(1, 6);
   JpdaSolver solver;
   for (int trial = 0; trial < 200; ++trial) {
-    const JpdaProblem problem = test::random_problem(tracks_of(rng), plots_of(rng), rng);
+    const int plots = plots_of(rng), tracks = tracks_of(rng);
+    const JpdaProblem problem = test::random_problem(tracks, plots, rng);
     const test::BruteForceJpda truth = test::brute_force_jpda(problem);
     if (truth.events.empty()) continue;
     const int all = static_cast<int>(truth.events.size());
@@ -280,8 +284,9 @@ TEST(JpdaExact, SkipsOnlyPassesThatWouldStopAtTheStateBound) {
   JpdaExact exact;
   int skipped = 0, stopped = 0, completed = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const JpdaProblem p =
-        test::chain_cluster(tracks_of(rng), 0.8 + 1.2 * unit(rng), 0.05 + 0.3 * unit(rng), rng);
+    const double clutter_density = 0.05 + 0.3 * unit(rng), spacing = 0.8 + 1.2 * unit(rng);
+    const int tracks = tracks_of(rng);
+    const JpdaProblem p = test::chain_cluster(tracks, spacing, clutter_density, rng);
     Eigen::MatrixXd w(p.likelihood.rows(), p.likelihood.cols() + 1);
     w.col(0) = p.miss;
     w.rightCols(p.likelihood.cols()) = p.likelihood / p.clutter_density;

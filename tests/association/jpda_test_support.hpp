@@ -103,12 +103,18 @@ inline JpdaProblem chain_cluster(int tracks, double spacing, double clutter_dens
   std::vector<Eigen::Vector2d> predicted, plots;
   for (int t = 0; t < tracks; ++t) predicted.emplace_back(t * spacing, 0.3 * normal(rng));
   for (const Eigen::Vector2d& x : predicted) {
-    if (unit(rng) < kPd) plots.emplace_back(x + Eigen::Vector2d(normal(rng), normal(rng)));
+    if (unit(rng) < kPd) {
+      // Each draw is its own step, last argument first: the order GCC used when the scenes were
+      // measured (C++ leaves the evaluation order of arguments unspecified).
+      const double dy = normal(rng), dx = normal(rng);
+      plots.emplace_back(x + Eigen::Vector2d(dx, dy));
+    }
   }
   const double width = (tracks - 1) * spacing + 2.0 * kMargin, height = 2.0 * kMargin;
   std::poisson_distribution<int> clutter(clutter_density * width * height);
   for (int n = clutter(rng); n > 0; --n) {
-    plots.emplace_back(-kMargin + width * unit(rng), -kMargin + height * unit(rng));
+    const double uy = unit(rng), ux = unit(rng);
+    plots.emplace_back(-kMargin + width * ux, -kMargin + height * uy);
   }
   std::vector<std::vector<double>> columns;
   for (const Eigen::Vector2d& z : plots) {

@@ -94,7 +94,10 @@ TEST(MurtyKBest, JpdaJointEventsComeOutInBruteForceOrder) {
   std::uniform_int_distribution<int> tracks_of(1, 5), plots_of(1, 6);
   MurtyKBest murty;
   for (int trial = 0; trial < 200; ++trial) {
-    const JpdaProblem p = test::random_problem(tracks_of(rng), plots_of(rng), rng);
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const int plots_drawn = plots_of(rng), tracks_drawn = tracks_of(rng);
+    const JpdaProblem p = test::random_problem(tracks_drawn, plots_drawn, rng);
     const int tracks = static_cast<int>(p.likelihood.rows());
     const int plots = static_cast<int>(p.likelihood.cols());
     Eigen::MatrixXd cost = Eigen::MatrixXd::Constant(tracks, plots + tracks, kInf);

@@ -14,7 +14,12 @@ namespace {
 std::vector<Eigen::Vector3d> random_points(int n, std::mt19937_64& rng) {
   std::uniform_real_distribution<double> xy(-5000.0, 5000.0), z(0.0, 2000.0);
   std::vector<Eigen::Vector3d> points;
-  for (int i = 0; i < n; ++i) points.emplace_back(xy(rng), xy(rng), z(rng));
+  for (int i = 0; i < n; ++i) {
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const double height = z(rng), y = xy(rng), x = xy(rng);
+    points.emplace_back(x, y, height);
+  }
   return points;
 }
 
@@ -31,7 +36,8 @@ TEST(PlotIndex, WithinMatchesBruteForceIn2dAnd3dAcrossRebuilds) {
       ASSERT_EQ(index.size(), n);
       ASSERT_EQ(index.dims(), dims);
       for (int q = 0; q < 200; ++q) {
-        const Eigen::Vector3d centre(xy(rng), xy(rng), z(rng));
+        const double height = z(rng), y = xy(rng), x = xy(rng);
+        const Eigen::Vector3d centre(x, y, height);
         const double r = radius(rng);
         index.within(centre, r, found);
         EXPECT_EQ(found, test::brute_force_within(points, dims, centre, r))

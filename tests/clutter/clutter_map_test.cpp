@@ -63,8 +63,16 @@ Batch background_and_area(std::uint64_t seed) {
   std::uniform_real_distribution<double> r(10e3, 150e3), az(-kPi, kPi), el(-0.12, -0.02);
   std::uniform_real_distribution<double> ra(70e3, 90e3), aza(-0.1, 0.1), ela(-0.11, -0.07);
   Batch b;
-  for (int i = 0; i < kBackground; ++i) b.add(polar(r(rng), az(rng), el(rng)));
-  for (int i = 0; i < kArea; ++i) b.add(polar(ra(rng), aza(rng), ela(rng)));
+  for (int i = 0; i < kBackground; ++i) {
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const double elevation = el(rng), azimuth = az(rng), range = r(rng);
+    b.add(polar(range, azimuth, elevation));
+  }
+  for (int i = 0; i < kArea; ++i) {
+    const double elevation = ela(rng), azimuth = aza(rng), range = ra(rng);
+    b.add(polar(range, azimuth, elevation));
+  }
   return b;
 }
 
@@ -175,7 +183,10 @@ TEST(ClutterMap, CartesianPlotsAreCountedOverTheirBlockArea) {
   Batch b;
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(0.0, 3000.0);
-  for (int i = 0; i < 90; ++i) b.add(cartesian(u(rng), u(rng)));
+  for (int i = 0; i < 90; ++i) {
+    const double y = u(rng), x = u(rng);
+    b.add(cartesian(x, y));
+  }
   b.add(cartesian(50e3, 50e3));
   const std::vector<double> d =
       b.densities({.range = 5000.0, .azimuth = 0.05, .cartesian = 1000.0});

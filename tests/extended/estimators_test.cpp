@@ -128,8 +128,11 @@ ExtendedObject track_static_object(EstimatorKind kind, const Eigen::Matrix2d& X)
       const double r = std::sqrt(u(rng)), phi = 2.0 * std::numbers::pi * u(rng);
       const Eigen::Vector2d local(axes.major * r * std::cos(phi), axes.minor * r * std::sin(phi));
       const double c = std::cos(axes.orientation), s = std::sin(axes.orientation);
-      plots.emplace_back(c * local.x() - s * local.y() + normal(rng),
-                         s * local.x() + c * local.y() + normal(rng));
+      // Each draw is its own step, last argument first: the order GCC used when the scenes were
+      // measured (C++ leaves the evaluation order of arguments unspecified).
+      const double noise_y = normal(rng), noise_x = normal(rng);
+      plots.emplace_back(c * local.x() - s * local.y() + noise_x,
+                         s * local.x() + c * local.y() + noise_y);
     }
     estimator.update(object, plots, Eigen::Matrix2d::Identity() * 4.0);
   }

@@ -75,8 +75,11 @@ void see_ten_scans(ExtendedTracker& tracker) {
     std::vector<Eigen::Vector2d> plots;
     for (int i = 0; i < 8; ++i) {
       const double r = std::sqrt(u(rng)), phi = 2.0 * std::numbers::pi * u(rng);
-      plots.push_back(centre + Eigen::Vector2d(100.0 * r * std::cos(phi) + noise(rng),
-                                               25.0 * r * std::sin(phi) + noise(rng)));
+      // Each draw is its own step, last argument first: the order GCC used when the scenes were
+      // measured (C++ leaves the evaluation order of arguments unspecified).
+      const double noise_y = noise(rng), noise_x = noise(rng);
+      plots.push_back(centre + Eigen::Vector2d(100.0 * r * std::cos(phi) + noise_x,
+                                               25.0 * r * std::sin(phi) + noise_y));
     }
     const std::vector<Eigen::Matrix2d> noises(plots.size(), kR * Eigen::Matrix2d::Identity());
     tracker.process(t, plots, noises);

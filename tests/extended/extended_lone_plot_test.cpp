@@ -32,8 +32,11 @@ Plots object_plots(double t, int count, std::mt19937_64& rng) {
   Plots plots;
   for (int i = 0; i < count; ++i) {
     const double r = std::sqrt(u(rng)), phi = 2.0 * std::numbers::pi * u(rng);
-    plots.push_back(centre + Eigen::Vector2d(100.0 * r * std::cos(phi) + noise(rng),
-                                             25.0 * r * std::sin(phi) + noise(rng)));
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const double noise_y = noise(rng), noise_x = noise(rng);
+    plots.push_back(centre + Eigen::Vector2d(100.0 * r * std::cos(phi) + noise_x,
+                                             25.0 * r * std::sin(phi) + noise_y));
   }
   return plots;
 }

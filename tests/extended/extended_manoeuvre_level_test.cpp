@@ -56,9 +56,12 @@ std::vector<Eigen::Vector2d> plots_at(const Truth& truth, std::mt19937_64& rng) 
   std::vector<Eigen::Vector2d> plots;
   for (int i = 0; i < 5; ++i) {
     const double r = std::sqrt(u(rng)), phi = 2.0 * std::numbers::pi * u(rng);
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const double noise_y = noise(rng), noise_x = noise(rng);
     plots.push_back(truth.centre +
                     turn * Eigen::Vector2d(170.0 * r * std::cos(phi), 40.0 * r * std::sin(phi)) +
-                    Eigen::Vector2d(noise(rng), noise(rng)));
+                    Eigen::Vector2d(noise_x, noise_y));
   }
   return plots;
 }

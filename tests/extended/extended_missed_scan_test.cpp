@@ -38,8 +38,11 @@ std::vector<Eigen::Vector2d> object_plots(double t, std::mt19937_64& rng) {
   std::vector<Eigen::Vector2d> plots;
   for (int i = 0; i < 8; ++i) {
     const double r = std::sqrt(u(rng)), phi = 2.0 * std::numbers::pi * u(rng);
-    plots.push_back(centre_at(t) + Eigen::Vector2d(25.0 * r * std::cos(phi) + noise(rng),
-                                                   100.0 * r * std::sin(phi) + noise(rng)));
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const double noise_y = noise(rng), noise_x = noise(rng);
+    plots.push_back(centre_at(t) + Eigen::Vector2d(25.0 * r * std::cos(phi) + noise_x,
+                                                   100.0 * r * std::sin(phi) + noise_y));
   }
   return plots;
 }

@@ -32,8 +32,11 @@ std::vector<std::uint64_t> run_unseen(const ExtendedSpec& spec, int scans, int u
     plots.clear();
     for (int i = 0; i < 8 && (k < unseen_from || k >= unseen_to); ++i) {
       const double r = std::sqrt(u(rng)), phi = 2.0 * std::numbers::pi * u(rng);
-      plots.push_back(centre + Eigen::Vector2d(50.0 * r * std::cos(phi) + noise(rng),
-                                               20.0 * r * std::sin(phi) + noise(rng)));
+      // Each draw is its own step, last argument first: the order GCC used when the scenes were
+      // measured (C++ leaves the evaluation order of arguments unspecified).
+      const double noise_y = noise(rng), noise_x = noise(rng);
+      plots.push_back(centre + Eigen::Vector2d(50.0 * r * std::cos(phi) + noise_x,
+                                               20.0 * r * std::sin(phi) + noise_y));
     }
     const std::vector<Eigen::Matrix2d> noises(plots.size(), Eigen::Matrix2d::Identity() * 25.0);
     EXPECT_FALSE(tracker.process(t, plots, noises).skipped);
@@ -115,8 +118,9 @@ TEST(ExtendedTrackLife, AConfirmedTrackSurvivesItsNextMissedScan) {
       plots.clear();
       for (int i = count(rng); i > 0; --i) {
         const double r = std::sqrt(u(rng)), phi = 2.0 * std::numbers::pi * u(rng);
-        plots.push_back(Eigen::Vector2d(10.0 * t + 50.0 * r * std::cos(phi) + noise(rng),
-                                        20.0 * r * std::sin(phi) + noise(rng)));
+        const double noise_y = noise(rng), noise_x = noise(rng);
+        plots.push_back(Eigen::Vector2d(10.0 * t + 50.0 * r * std::cos(phi) + noise_x,
+                                        20.0 * r * std::sin(phi) + noise_y));
       }
       const std::vector<Eigen::Matrix2d> noises(plots.size(), Eigen::Matrix2d::Identity() * 25.0);
       tracker.process(t, plots, noises);

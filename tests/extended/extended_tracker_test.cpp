@@ -31,8 +31,11 @@ void object_plots(const Object& o, double t, int n, std::mt19937_64& rng,
   for (int i = 0; i < n; ++i) {
     const double r = std::sqrt(u(rng)), phi = 2.0 * std::numbers::pi * u(rng);
     const double a = o.major * r * std::cos(phi), b = o.minor * r * std::sin(phi);
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const double noise_y = noise(rng), noise_x = noise(rng);
     out.emplace_back(o.start + t * o.velocity + Eigen::Vector2d(c * a - s * b, s * a + c * b) +
-                     Eigen::Vector2d(noise(rng), noise(rng)));
+                     Eigen::Vector2d(noise_x, noise_y));
   }
 }
 
@@ -53,7 +56,10 @@ std::vector<std::vector<std::uint64_t>> run_crossing(EstimatorKind kind,
     const double t = 10.0 * k;
     plots.clear();
     for (const Object& o : objects) object_plots(o, t, 10, rng, plots);
-    for (int c = 0; c < 10; ++c) plots.emplace_back(u(rng), u(rng));
+    for (int c = 0; c < 10; ++c) {
+      const double y = u(rng), x = u(rng);
+      plots.emplace_back(x, y);
+    }
     const std::vector<Eigen::Matrix2d> noises(plots.size(), Eigen::Matrix2d::Identity() * 25.0);
     const ExtendedScanReport report = tracker.process(t, plots, noises);
     EXPECT_FALSE(report.skipped);

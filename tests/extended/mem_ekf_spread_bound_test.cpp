@@ -22,8 +22,11 @@ std::vector<Eigen::Vector2d> object_plots(const Eigen::Vector2d& centre, double 
   std::vector<Eigen::Vector2d> plots;
   for (int i = 0; i < n; ++i) {
     const double r = std::sqrt(u(rng)), phi = 2.0 * std::numbers::pi * u(rng);
-    plots.push_back(centre + Eigen::Vector2d(major * r * std::cos(phi) + noise(rng),
-                                             minor * r * std::sin(phi) + noise(rng)));
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const double noise_y = noise(rng), noise_x = noise(rng);
+    plots.push_back(centre + Eigen::Vector2d(major * r * std::cos(phi) + noise_x,
+                                             minor * r * std::sin(phi) + noise_y));
   }
   return plots;
 }

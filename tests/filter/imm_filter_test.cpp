@@ -121,7 +121,10 @@ TEST(ImmFilter, IdenticalModesEqualASingleKalmanFilter) {
     const double t = 2.0 * k;
     imm = filter->predict(imm, t);
     kf = predict(cv, test::layout_2d(), kf, 2.0);
-    PlotMeasurement plot = test::cartesian_xy(50 * t + noise(rng), -20 * t + noise(rng), 5.0);
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const double noise_y = noise(rng), noise_x = noise(rng);
+    PlotMeasurement plot = test::cartesian_xy(50 * t + noise_x, -20 * t + noise_y, 5.0);
     const std::array<PlotHypothesis, 1> h = {filter->hypothesise(imm, plot)};
     const std::array<double, 1> beta = {1.0};
     imm = filter->update(imm, h, beta, 0.0, 0.9, 0.99, 1e-6);

@@ -32,7 +32,10 @@ std::vector<Eigen::Vector3d> scan_plots(const std::vector<Truth>& groups, double
     }
     const Eigen::Vector2d c = groups[g].position + t * groups[g].velocity;
     for (int i = 0; i < 15; ++i) {
-      plots.emplace_back(c.x() + spread(rng), c.y() + spread(rng), 0.0);
+      // Each draw is its own step, last argument first: the order GCC used when the scenes were
+      // measured (C++ leaves the evaluation order of arguments unspecified).
+      const double dy = spread(rng), dx = spread(rng);
+      plots.emplace_back(c.x() + dx, c.y() + dy, 0.0);
     }
   }
   return plots;

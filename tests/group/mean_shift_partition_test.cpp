@@ -35,7 +35,10 @@ TEST(MeanShiftPartitioner, TwoGroupsInClutter) {
   std::vector<Eigen::Vector3d> p;
   for (const Eigen::Vector2d& c : {Eigen::Vector2d(0, 0), Eigen::Vector2d(300, 0)}) {
     for (int i = 0; i < 15; ++i) {
-      p.emplace_back(c.x() + spread(rng), c.y() + spread(rng), 0.0);
+      // Each draw is its own step, last argument first: the order GCC used when the scenes were
+      // measured (C++ leaves the evaluation order of arguments unspecified).
+      const double dy = spread(rng), dx = spread(rng);
+      p.emplace_back(c.x() + dx, c.y() + dy, 0.0);
     }
   }
   for (int i = 0; i < 10; ++i) {

@@ -55,7 +55,12 @@ TEST(GaussianWasserstein, ClosedFormMatchesMatrixSquareRootsAndIsSymmetric) {
     B << n(rng), n(rng), n(rng), n(rng);
     const Eigen::Matrix2d X1 = A * A.transpose() + Eigen::Matrix2d::Identity();
     const Eigen::Matrix2d X2 = B * B.transpose() + Eigen::Matrix2d::Identity();
-    const Eigen::Vector2d m1(n(rng), n(rng)), m2(n(rng), n(rng));
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const double m1_y = n(rng), m1_x = n(rng);
+    const Eigen::Vector2d m1(m1_x, m1_y);
+    const double m2_y = n(rng), m2_x = n(rng);
+    const Eigen::Vector2d m2(m2_x, m2_y);
     const double d2 = gaussian_wasserstein_squared(m1, X1, m2, X2);
     EXPECT_NEAR(d2, reference_squared(m1, X1, m2, X2), 1e-6 * (1.0 + d2));
     EXPECT_NEAR(d2, gaussian_wasserstein_squared(m2, X2, m1, X1), 1e-6 * (1.0 + d2));

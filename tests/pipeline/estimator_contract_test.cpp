@@ -96,10 +96,17 @@ std::vector<PlotScan> stream(int batches, std::uint64_t seed) {
     scan.sigma.y = 10.0;
     const double t = scan.time;
     std::int64_t id = 0;
-    scan.plots.push_back(cartesian(id++, 10e3 + 200.0 * t + noise(rng), 5e3 + noise(rng)));
-    scan.plots.push_back(cartesian(id++, -8e3 + noise(rng), 20e3 - 150.0 * t + noise(rng)));
+    // Each draw is its own step, last argument first: the order GCC used when the scenes were
+    // measured (C++ leaves the evaluation order of arguments unspecified).
+    const double noise_y0 = noise(rng), noise_x0 = noise(rng);
+    scan.plots.push_back(cartesian(id++, 10e3 + 200.0 * t + noise_x0, 5e3 + noise_y0));
+    const double noise_y1 = noise(rng), noise_x1 = noise(rng);
+    scan.plots.push_back(cartesian(id++, -8e3 + noise_x1, 20e3 - 150.0 * t + noise_y1));
     scan.plots.push_back(cartesian(id++, 3e3 + 100.0 * t + noise(rng), -15e3 + 100.0 * t));
-    for (int c = 0; c < 3; ++c) scan.plots.push_back(cartesian(id++, anywhere(rng), anywhere(rng)));
+    for (int c = 0; c < 3; ++c) {
+      const double y = anywhere(rng), x = anywhere(rng);
+      scan.plots.push_back(cartesian(id++, x, y));
+    }
     out.push_back(std::move(scan));
   }
   return out;
@@ -194,7 +201,8 @@ TYPED_TEST(EstimatorContract, NoInputThrows) {
     if (pick(rng) == 0) scan.platform.position.x() = value();
     const int n = pick(rng) * pick(rng);
     for (int i = 0; i < n; ++i) {
-      Plot p = cartesian(i % 5, value(), value());
+      const double y = value(), x = value();
+      Plot p = cartesian(i % 5, x, y);
       if (pick(rng) < 6) {
         p.form = PlotForm::kPolar;
         p.range = value();

@@ -64,8 +64,10 @@ std::vector<MultiScan> multi_object_scans(std::uint64_t seed) {
     }
     const int clutter = clutter_count(rng);
     for (int c = 0; c < clutter; ++c) {
-      scan.plots.emplace_back((2.0 * unit(rng) - 1.0) * kHalfWidth,
-                              (2.0 * unit(rng) - 1.0) * kHalfWidth);
+      // Each draw is its own step, last argument first: the order GCC used when the scenes were
+      // measured (C++ leaves the evaluation order of arguments unspecified).
+      const double uy = unit(rng), ux = unit(rng);
+      scan.plots.emplace_back((2.0 * ux - 1.0) * kHalfWidth, (2.0 * uy - 1.0) * kHalfWidth);
     }
   }
   return scans;

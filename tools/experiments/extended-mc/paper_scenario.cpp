@@ -70,7 +70,10 @@ void sample_object_plots(const ObjectTruth& truth, int count, const Eigen::Matri
     if (noise == NoiseKind::kBounded) {
       z += noise_root * uniform_in_disc(rng);
     } else {
-      z += noise_root * Eigen::Vector2d(normal(rng), normal(rng));
+      // Each draw is its own step, last argument first: the order GCC used when the scenes were
+      // measured (C++ leaves the evaluation order of arguments unspecified).
+      const double ny = normal(rng), nx = normal(rng);
+      z += noise_root * Eigen::Vector2d(nx, ny);
     }
     out.push_back(z);
   }
