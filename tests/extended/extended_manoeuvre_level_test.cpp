@@ -168,7 +168,8 @@ TEST_P(ManoeuvreLevel, AQuietStraightLevelKeepsTheTurningShipsNumber) {
   const Outcome out = run(GetParam(), 0.1, 2.0, true);
   // Measured: no run renumbered, RMS centre error 39 / 53 / 43 m (SMF-EOT / random matrix /
   // MEM-EKF*); SMF-EOT gating on the quiet level's set renumbered the ship in 2 of 20 runs,
-  // 84 m.
+  // 84 m. A pin on these runs' noise, not a bound: with each plot's two noise draws swapped,
+  // the random matrix renumbered 1 of the 20 (72.9 m).
   EXPECT_EQ(out.renumbered_runs, 0);
   EXPECT_LT(out.error, 70.0);
 }
