@@ -9,6 +9,7 @@
 #include <utility>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 
 #include "skytrack/extended/ellipse_geometry.hpp"
 #include "skytrack/extended/extended_existence.hpp"
@@ -335,8 +336,51 @@ void ExtendedTracker::initiate(const std::vector<int>& group, ExtendedScanReport
   ++report.initiated;
 }
 
+void ExtendedTracker::hand_over_split_objects() {
+  // A turn's first scan can split an object's plots: the track takes the part its gate holds,
+  // the rest starts a track beside it, and the next scan's plots all fall to the new track.
+  // A confirmed track that took plots last scan and none now gives its number to a track born
+  // last scan within its object's length of it (a piece of the same hull) that took plots.
+  // The length is that of the extent association uses; SMF-EOT's, an inner bound, collapses
+  // on the split's few plots to the floor, so its ships are seldom reached.
+  for (int c = 0; c < static_cast<int>(priors_.size()); ++c) {
+    ExtendedTrack& confirmed = tracks_[c];
+    if (confirmed.status != ExtendedTrackStatus::kConfirmed || confirmed.plots > 0 ||
+        confirmed.unresolved || confirmed.misses > 0) {
+      continue;
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> axes(association_extents_[c],
+                                                              Eigen::EigenvaluesOnly);
+    const double length = 2.0 * std::sqrt(std::max(axes.eigenvalues().maxCoeff(), 0.0));
+    int piece = -1;
+    double nearest = length;
+    for (int n = 0; n < static_cast<int>(priors_.size()); ++n) {
+      const ExtendedTrack& born = tracks_[n];
+      if (born.status != ExtendedTrackStatus::kTentative || born.hits != 1 || born.plots == 0) {
+        continue;
+      }
+      const double d = (priors_[n].position() - priors_[c].position()).norm();
+      if (d <= nearest) nearest = d, piece = n;
+    }
+    if (piece < 0) continue;
+    ExtendedTrack& born = tracks_[piece];
+    const std::uint64_t id = confirmed.id;
+    const int hits = confirmed.hits;
+    const double log_odds = confirmed.existence_log_odds;
+    confirmed = born;
+    confirmed.id = id;
+    confirmed.status = ExtendedTrackStatus::kConfirmed;
+    confirmed.hits = hits;
+    confirmed.existence_log_odds = log_odds;
+    gate_areas_[c] = gate_areas_[piece];
+    born.plots = 0;
+    born.misses = spec_.tentative_max_misses;  // deleted below: its object is the number's
+  }
+}
+
 void ExtendedTracker::manage(ExtendedScanReport& report) {
   const std::uint64_t first_new = next_id_ - static_cast<std::uint64_t>(report.initiated);
+  hand_over_split_objects();
   for (int t = 0; t < static_cast<int>(tracks_.size()); ++t) {
     ExtendedTrack& track = tracks_[t];
     if (track.id >= first_new) continue;  // born this scan

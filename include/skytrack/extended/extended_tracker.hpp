@@ -153,6 +153,9 @@ class ExtendedTracker {
   // After the track's prediction this scan; SMF-EOT with two levels: also predicts it at
   // manoeuvre_accel into manoeuvre_predictions_.
   Eigen::Matrix2d gate_centre_cov(int t);
+  // A confirmed track that lost its object to a track born beside it last scan (a turn's
+  // split plots) takes that track's state and keeps its number.
+  void hand_over_split_objects();
   void manage(ExtendedScanReport& report);
 
   ExtendedSpec spec_;
