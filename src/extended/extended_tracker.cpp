@@ -9,7 +9,6 @@
 #include <utility>
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 
 #include "skytrack/extended/ellipse_geometry.hpp"
 #include "skytrack/extended/extended_existence.hpp"
@@ -349,9 +348,7 @@ void ExtendedTracker::hand_over_split_objects() {
         confirmed.unresolved || confirmed.misses > 0) {
       continue;
     }
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> axes(association_extents_[c],
-                                                              Eigen::EigenvaluesOnly);
-    const double length = 2.0 * std::sqrt(std::max(axes.eigenvalues().maxCoeff(), 0.0));
+    const double length = 2.0 * ellipse_axes(association_extents_[c]).major;
     int piece = -1;
     double nearest = length;
     for (int n = 0; n < static_cast<int>(priors_.size()); ++n) {

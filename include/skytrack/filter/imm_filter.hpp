@@ -168,8 +168,8 @@ class ImmFilter {
 
  private:
   /// A prediction longer than the transition interval is made in steps of one interval and
-  /// the remainder (at most 8 equal steps), mixing between steps;
-  /// `certain` >= 0 predicts in one step.
+  /// the remainder (a very long one in a bounded number of equal steps), mixing between
+  /// steps; `certain` >= 0 predicts in one step.
   void predict_modes(const ImmEstimate& posterior, double time, int certain,
                      ImmEstimate& out) const noexcept;
   /// Mixing and per-mode prediction over one step, the Markov matrix taken over its length.
