@@ -57,8 +57,11 @@ void make_scans(Scenario& sc, std::mt19937_64& rng) {
       const BoxVec& x = g.state[static_cast<std::size_t>(k - 1)];
       const int n = std::poisson_distribution<int>(g.plot_rate)(rng);
       for (int i = 0; i < n; ++i) {
-        const double px = x(0) + spread(rng) + noise(rng);
-        const double py = x(2) + spread(rng) + noise(rng);
+        // One draw per statement: the order of a sum's operands is unspecified in C++.
+        const double spread_x = spread(rng);
+        const double px = x(0) + spread_x + noise(rng);
+        const double spread_y = spread(rng);
+        const double py = x(2) + spread_y + noise(rng);
         scan.plots.emplace_back(px, py, 0.0);
         scan.source.push_back(g.id);
       }
@@ -122,8 +125,11 @@ Scenario make_experiment1(std::uint64_t seed) {
     Scan& scan = sc.scans[static_cast<std::size_t>(k - 1)];
     const int extra = std::poisson_distribution<int>(g2.plot_rate)(rng);
     for (int i = 0; i < extra; ++i) {
-      const double px = x(0) + spread(rng) + noise(rng);
-      scan.plots.emplace_back(px, x(2) + spread(rng) + noise(rng), 0.0);
+      const double spread_x = spread(rng);
+      const double px = x(0) + spread_x + noise(rng);
+      const double spread_y = spread(rng);
+      const double py = x(2) + spread_y + noise(rng);
+      scan.plots.emplace_back(px, py, 0.0);
       scan.source.push_back(1);
     }
   }
