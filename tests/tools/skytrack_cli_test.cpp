@@ -141,3 +141,20 @@ TEST(SkytrackEval, MissingFileFailsWithItsName) {
 }
 
 }  // namespace
+
+TEST(SkytrackBenchLatency, WritePlotsGivesTheDaemonsLoadWithoutDds) {
+  // GIVEN no daemon: --write-plots needs none
+  const auto dir = std::filesystem::temp_directory_path() / "skytrack_cli_bench_plots";
+  std::filesystem::create_directories(dir);
+  const std::string plots = (dir / "bench.plots.jsonl").string();
+  // WHEN the benchmark's scans are written (2 warm-up and 3 timed, 4 targets each)
+  const RunResult w = run("bench-latency --targets 4 --scans 3 --warmup 2 --write-plots " + plots);
+  ASSERT_EQ(w.exit_code, 0) << w.output;
+  // THEN they are a plot stream the offline tracker reads whole, one scan per line
+  const RunResult r =
+      run("track --quiet --plots " + plots + " --out " + (dir / "t.jsonl").string());
+  EXPECT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("5 batches (0 skipped), 20 plots (0 invalid"));
+  EXPECT_THAT(r.output, HasSubstr("0 lines rejected"));
+  std::filesystem::remove_all(dir);
+}

@@ -2,7 +2,8 @@
 // moving targets (Cartesian plots, no clutter, seeded noise) one at a time and times each until
 // the TrackBatch of the same scan arrives (ping-pong, like ddsperf's round trip), then prints
 // p50/p99/max over the scans after the warm-up. A benchmark tool, not a test:
-// tools/experiments/daemon-latency.sh runs it next to ddsperf for the floor.
+// tools/experiments/daemon-latency.sh runs it next to ddsperf for the floor. With
+// --write-plots it writes the same scans as a plot stream instead, for `skytrack track`.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -19,6 +20,7 @@
 #include "skytrack/daemon/latency_stats.hpp"
 #include "skytrack/dds/checked_take.hpp"
 #include "skytrack/dds/conversion.hpp"
+#include "skytrack/io/jsonl_writer.hpp"
 
 namespace skytrack::tool {
 namespace {
@@ -31,6 +33,7 @@ struct BenchOptions {
   int scans = 300;
   int warmup = 20;
   std::uint32_t sensor = 1;
+  std::string write_plots;  // the scans as a plot stream, no DDS
 };
 
 /// Scan k of N targets on a 2 km grid, all flying east at 200 m/s (a steady picture: no
@@ -55,7 +58,28 @@ PlotScan make_scan(int targets, int k, std::uint32_t sensor, std::mt19937_64& rn
   return scan;
 }
 
+constexpr std::uint64_t kSeed = 42;
+
+/// The warm-up and timed scans, written as a plot stream (CONTRACTS.md section 1).
+int write_plots(const BenchOptions& o) {
+  auto out = io::JsonLinesWriter::open(o.write_plots);
+  if (!out) {
+    fmt::print(stderr, "skytrack bench-latency: {}\n", out.error().message);
+    return 2;
+  }
+  std::mt19937_64 rng(kSeed);
+  for (int k = 0; k < o.warmup + o.scans; ++k) {
+    out->write(make_scan(o.targets, k + 1, o.sensor, rng));
+  }
+  if (!out->close()) {
+    fmt::print(stderr, "skytrack bench-latency: cannot write {}\n", o.write_plots);
+    return 2;
+  }
+  return 0;
+}
+
 int run_bench(const BenchOptions& o) {
+  if (!o.write_plots.empty()) return write_plots(o);
   auto pipe = open_plot_pipe(o.dds, "bench-latency");
   if (!pipe) {
     fmt::print(stderr, "{}\n", pipe.error().message);
@@ -84,7 +108,7 @@ int run_bench(const BenchOptions& o) {
     return found;
   };
   drain(~0ull);
-  std::mt19937_64 rng(42);
+  std::mt19937_64 rng(kSeed);
   daemon::LatencyStats stats(static_cast<std::size_t>(o.scans));
   std::size_t payload = 0, lost = 0;
   dds::PlotBatchSample sample;
@@ -124,6 +148,9 @@ void add_bench_latency_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--scans", o->scans, "Timed scans")->default_val(300);
   cmd->add_option("--warmup", o->warmup, "Untimed scans first (track initiation)")->default_val(20);
   cmd->add_option("--sensor", o->sensor, "Sensor id of the scans")->default_val(1);
+  cmd->add_option("--write-plots", o->write_plots,
+                  "Write the warm-up and timed scans to this plot stream (JSON Lines) and exit, "
+                  "without DDS: the same load offline for `skytrack track`");
   add_dds_options(*cmd, o->dds);
   cmd->footer(
       "Example: skytrack bench-latency --config config/skytrackd.yaml --targets 1000 "
