@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Daemon latency: PlotBatch -> TrackBatch round trip through skytrackd (skytrack bench-latency)
 # for 10, 100 and 1000 targets per scan, each with a fresh daemon, next to Cyclone's own
-# ddsperf ping/pong round trip for the same payload size as the floor. Loopback only: every
-# process, ddsperf included, runs with config/dds/loopback.xml (domain 231).
+# ddsperf ping/pong round trip for the same payload size as the floor, and the same scans
+# tracked offline (bench-latency --write-plots, then skytrack track: the tracking alone).
+# Loopback only: every process, ddsperf included, runs with config/dds/loopback.xml
+# (domain 231).
 # Usage: tools/experiments/daemon-latency.sh [scans=300]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -33,6 +35,9 @@ for targets in 10 100 1000; do
   kill -TERM "${pids[0]}"
   wait "${pids[0]}"
   pids=()
+  "$skytrack" bench-latency --targets "$targets" --scans "$n" --write-plots "$work/load.plots.jsonl"
+  "$skytrack" track --plots "$work/load.plots.jsonl" --out /dev/null --quiet 2>&1 |
+    sed -nE 's/.*per batch: mean ([^,]*), p50 ([^,]*), p99 ([^,]*),.*/    the same scans offline (skytrack track, warm-up included): per batch p50 \2, p99 \3, mean \1/p'
   size=$(echo "$line" | sed -E 's/.*payload ~ *([0-9]+) B.*/\1/')
   ddsperf -D 7 -i $domain pong waitset >"$work/pong.log" 2>&1 &
   pids=($!)
