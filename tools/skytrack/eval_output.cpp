@@ -7,11 +7,15 @@
 #include <fmt/ranges.h>
 
 namespace skytrack::tool {
+namespace {
 
-// fmt's {} is the shortest representation that reads back bit-identical.
+/// A JSON number, or null for NaN / inf (JSON has neither). fmt's {} is the shortest
+/// representation that reads back bit-identical.
 std::string json_number(double v) {
   return std::isfinite(v) ? fmt::format("{}", v) : "null";
 }
+
+}  // namespace
 
 bool PerScanWriter::open(const std::string& path) {
   if (path.empty()) return true;

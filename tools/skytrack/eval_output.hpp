@@ -9,9 +9,6 @@
 
 namespace skytrack::tool {
 
-/// A JSON number, or null for NaN / inf (JSON has neither).
-std::string json_number(double v);
-
 /// Writes the per-scan records: JSON Lines for a .jsonl file, CSV otherwise.
 class PerScanWriter {
  public:
