@@ -140,8 +140,6 @@ TEST(SkytrackEval, MissingFileFailsWithItsName) {
   EXPECT_THAT(r.output, HasSubstr("/nonexistent/t.jsonl"));
 }
 
-}  // namespace
-
 TEST(SkytrackBenchLatency, WritePlotsGivesTheDaemonsLoadWithoutDds) {
   // GIVEN no daemon: --write-plots needs none
   const auto dir = std::filesystem::temp_directory_path() / "skytrack_cli_bench_plots";
@@ -158,3 +156,5 @@ TEST(SkytrackBenchLatency, WritePlotsGivesTheDaemonsLoadWithoutDds) {
   EXPECT_THAT(r.output, HasSubstr("0 lines rejected"));
   std::filesystem::remove_all(dir);
 }
+
+}  // namespace
