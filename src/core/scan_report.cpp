@@ -14,6 +14,7 @@ void ScanReport::add_later_look(const ScanReport& look) {
   coasting = look.coasting;
   initiated += look.initiated;
   initiations_refused += look.initiations_refused;
+  chains_held += look.chains_held;
   deleted += look.deleted;
   numeric_failures += look.numeric_failures;
   predict += look.predict;

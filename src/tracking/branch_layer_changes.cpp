@@ -134,7 +134,7 @@ void BranchLayer::create_branch(const BranchPair& pair, ScanReport& report, Trac
                    profile_.point.track_life.confirm_existence);
   }
   branch.estimate =
-      of_father ? son_start(pair.track, plot) : start_estimate(*look_, initiation, branch.life);
+      of_father ? son_start(pair.track, plot) : *start_estimate(*look_, initiation, branch.life);
   branch.quality = parent_quality;
   branch.first_plot = *start;
   branch.last_plot = plot;
@@ -261,6 +261,9 @@ void BranchLayer::age_branches(ScanReport& report, TrackFrame& frame) {
 }
 
 void BranchLayer::after_initiation() {
+  // A held chain confirmed as it started (point_tracker_initiation.cpp) may continue a lost
+  // father, as a track confirmed by the look's association does.
+  if (!confirmed_now_.empty()) continue_lost_fathers(look_->report);
   // A doomed father that may start no more sons goes with its last branch.
   for (PointTrack& father : store().all()) {
     if (father.branch != BranchType::kFather || father.replaced || !father.doomed() ||

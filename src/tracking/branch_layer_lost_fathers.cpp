@@ -127,7 +127,7 @@ bool BranchLayer::start_chain_branch(int father, const Initiation& initiation, S
   PointTrack branch;
   branch.life = initiated_life(static_cast<int>(initiation.plots.size()), initiation.scans);
   branch.life.existence = profile_.point.track_life.initial_existence;
-  branch.estimate = start_estimate(*look_, initiation, branch.life);
+  branch.estimate = *start_estimate(*look_, initiation, branch.life);
   if (!room_for_chain(father_id, branch.life.existence, plot.plot_id, report) ||
       !make_room(father_id, father_id, score, plot.plot_id, report)) {
     return false;

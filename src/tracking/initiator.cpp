@@ -91,21 +91,27 @@ Initiator::Initiator(const config::InitiationSpec& spec, int dims, ChainManoeuvr
 const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
                                                const std::vector<PlotMeasurement>& plots,
                                                const Coverage& covered,
-                                               std::span<const Eigen::Vector3d> positions) {
+                                               std::span<const Eigen::Vector3d> positions,
+                                               std::span<const std::uint8_t> track_plots) {
   // A snapshot sensor: each batch is one revolution of sweep after the last.
   const double sweep = 2.0 * kHalfTurn * static_cast<double>(batch);
   snapshot_plots_ = plots;
   for (PlotMeasurement& p : snapshot_plots_) p.sweep = sweep;
   return step(batch, time, plots.empty() ? 0 : plots.front().sensor, sweep, snapshot_plots_,
-              covered, positions);
+              covered, positions, track_plots);
 }
 
 const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
                                                std::uint32_t sensor, double sweep,
                                                const std::vector<PlotMeasurement>& plots,
                                                const Coverage& covered,
-                                               std::span<const Eigen::Vector3d> positions) {
+                                               std::span<const Eigen::Vector3d> positions,
+                                               std::span<const std::uint8_t> track_plots) {
+  assert(track_plots.empty() || track_plots.size() == plots.size());
   completed_.clear();
+  track_plots_ = track_plots;
+  batch_ = batch;
+  sweep_ = sweep;
   // This batch is a look at every seed and chain it covers that the beam has not passed
   // within the last half revolution (a chain predicted across the cut it was made at).
   const auto looks_at = [&](double& last, std::uint32_t seen_by, const Eigen::Vector3d& position) {
@@ -135,13 +141,19 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
   extend_chains(batch, plots);
   pair_with_seeds(batch, plots);
   for (std::size_t i = 0; i < plots.size(); ++i) {
-    if (!used_[i]) seeds_.push_back({plots[i], positions_[i], batch, 0, plots[i].sweep});
+    if (!used_[i] && !track_plot(i)) {
+      seeds_.push_back({plots[i], positions_[i], batch, 0, plots[i].sweep});
+    }
   }
-  // Chains with M plots become tracks.
+  track_plots_ = {};
+  // Chains with M plots become tracks; a held chain completes again with its next plot.
   for (std::size_t c = 0; c < chains_.size();) {
     Chain& chain = chains_[c];
-    if (static_cast<int>(chain.plots.size()) >= spec_.m) {
-      completed_.push_back({std::move(chain.plots), chain.looks, chain.last});
+    const bool held = chain.held_plots > 0;
+    const int plots_to_complete = held ? chain.held_plots + 1 : spec_.m;
+    if (static_cast<int>(chain.plots.size()) >= plots_to_complete) {
+      completed_.push_back(
+          {std::move(chain.plots), chain.looks, chain.last, held, chain.held_existence});
       chains_[c] = std::move(chains_.back());
       chains_.pop_back();
     } else {
@@ -157,6 +169,31 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
     return std::tie(x.time, x.z[0], x.z[1]) < std::tie(y.time, y.z[0], y.z[1]);
   });
   return completed_;
+}
+
+void Initiator::hold(const Initiation& initiation, double existence) {
+  assert(initiation.plots.size() >= 2);
+  // Its last M plots: enough to start an estimate from, and a chain held look after look
+  // restarts from as many (its existence carries the weighing of the others).
+  const std::size_t n =
+      std::min(initiation.plots.size(), static_cast<std::size_t>(std::max(spec_.m, 2)));
+  Chain chain;
+  chain.plots.assign(initiation.plots.end() - static_cast<std::ptrdiff_t>(n),
+                     initiation.plots.end());
+  const PlotMeasurement& last = chain.plots[n - 1];
+  const PlotMeasurement& before = chain.plots[n - 2];
+  // As extend_chains left it in the step that completed it.
+  chain.position = approximate_position(last);
+  chain.velocity = (chain.position - approximate_position(before)) / (last.time - before.time);
+  chain.time = last.time;
+  chain.last_batch = batch_;
+  chain.looks = initiation.scans;
+  chain.looked = std::max(sweep_, last.sweep);
+  chain.last = initiation.last;
+  chain.held_plots = static_cast<int>(n);
+  chain.held_looks = chain.looks;
+  chain.held_existence = existence;
+  chains_.push_back(std::move(chain));
 }
 
 void Initiator::search_regions(double time, std::vector<SearchRegion>& out) const {
@@ -203,6 +240,7 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
     for (const int j : neighbours_) {
       const double dt = plots[j].time - chain.time;
       if (dt <= 0.0 || same_revolution(chain.plots.back(), plots[j])) continue;
+      if (chain.held_plots == 0 && track_plot(static_cast<std::size_t>(j))) continue;
       const Eigen::Vector3d expected = chain.position + chain.velocity * dt;
       const double manoeuvre = 0.5 * accel * dt * dt;
       const double gate = 4.0 * (sigma_last + position_sigma(plots[j])) + manoeuvre;
@@ -273,7 +311,7 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
     seed_indices_[g].build(seed_positions_, dims_, cell);
   }
   for (std::size_t i = 0; i < plots.size(); ++i) {
-    if (used_[i]) continue;
+    if (used_[i] || track_plot(i)) continue;
     // The seed whose implied speed is plausible and whose distance is smallest (the first in
     // seed order among equals). The youngest batch's seeds are searched first: the nearest
     // found bounds the search among the older ones, whose speed discs are wider.
@@ -327,6 +365,8 @@ void Initiator::retire() {
   const int window = std::max(1, spec_.n);
   std::erase_if(seeds_, [&](const Seed& s) { return s.looks >= window - 1; });
   std::erase_if(chains_, [&](const Chain& c) {
+    // A held chain looked at without taking a plot: as a track it would have been deleted.
+    if (c.held_plots > 0) return c.looks > c.held_looks;
     return static_cast<int>(c.plots.size()) + (window - c.looks) < spec_.m;
   });
 }

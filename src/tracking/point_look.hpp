@@ -2,6 +2,7 @@
 // One look of the point tracker as its components see it: the tracker's parts and the look's
 // plots, outputs and per-plot marks (built by PointTracker::process; not installed).
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -41,9 +42,14 @@ struct PointLook {
   std::vector<std::uint8_t>& held;
   // The index in pre.plots() of each plot given to the initiator in this look.
   std::vector<int>& initiation_plots;
-  // start_estimate's prediction and innovation shapes, whose storage every start reuses.
+  // start_estimate's prediction, innovation shapes, and a held chain's plots round its
+  // prediction with their hypotheses and weights, whose storage every start reuses.
   ImmEstimate& start_predicted;
   HypothesisShapes& start_shapes;
+  std::vector<int>& start_neighbours;
+  std::vector<PlotHypothesis>& start_hypotheses;
+  std::vector<double>& start_beta;
+  bool start_valid = false;  // the held chain's look had a valid association (paper 003 §2.2)
   // Updates with failed modes and clusters whose association failed.
   int numeric_failures = 0;
 
@@ -60,8 +66,10 @@ struct PointLook {
 
 /// The start of a new track's estimate (two-point, then IMM updates with the chain's further
 /// plots, which also update its existence: the chain's last plot, from this look, is weighed
-/// against the clutter density estimated round it, as a track's plots are).
-ImmEstimate start_estimate(PointLook& look, const Initiation& initiation, TrackLife& life);
+/// against the clutter density estimated round it, as a track's plots are). None, with the
+/// existence updated but no estimate made, when the existence ends below `hold_below`.
+std::optional<ImmEstimate> start_estimate(PointLook& look, const Initiation& initiation,
+                                          TrackLife& life, double hold_below = 0.0);
 
 /// Marks in look.held the plots a track's non-manoeuvre association holds back from
 /// initiation (initiation.gated_seed_beta).

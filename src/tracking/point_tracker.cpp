@@ -36,7 +36,10 @@ PointTracker::PointTracker(const config::TrackingProfile& profile, ImmFilter fil
       associator_(profile),
       initiator_(profile.point.initiation, filter_.layout().dims,
                  ChainManoeuvre::from_models(profile.motion_models, filter_.layout().dims)),
-      branches_(std::move(branches)) {}
+      branches_(std::move(branches)),
+      outlive_miss_existence_(existence_to_outlive_a_miss(
+          profile.association.detection_probability, profile.association.gate_probability,
+          profile.point.track_life, profile.point.branching.detectability)) {}
 
 const BranchTree& PointTracker::branch_tree() const {
   static const BranchTree kNone;  // branching off: no branches
@@ -64,7 +67,10 @@ void PointTracker::process(const PlotScan& scan, Preprocessing& pre, TrackFrame&
                  .held = held_,
                  .initiation_plots = initiation_plots_,
                  .start_predicted = start_predicted_,
-                 .start_shapes = start_shapes_};
+                 .start_shapes = start_shapes_,
+                 .start_neighbours = start_neighbours_,
+                 .start_hypotheses = start_hypotheses_,
+                 .start_beta = start_beta_};
   BranchHooks& hooks = this->hooks();
   hooks.begin(look);
 

@@ -55,6 +55,20 @@ void update_detectability(TrackLife& life, double likelihood_ratio, double detec
   life.detectable = std::isfinite(updated) ? std::clamp(updated, 1e-9, 1.0) : predicted;
 }
 
+double existence_to_outlive_a_miss(double detection_probability, double gate_probability,
+                                   const config::TrackLifeSpec& spec,
+                                   const config::DetectabilitySpec& detectability) noexcept {
+  if (spec.confirmation != config::ConfirmationMethod::kExistence) return 0.0;
+  const TrackLife fresh;
+  const double pd = support_detection_probability(fresh, detection_probability, detectability);
+  // update_existence with no plot, solved for the predicted existence that lands on the
+  // deletion threshold d: (1 - delta) p / (1 - delta p) = d.
+  const double delta = pd * gate_probability;
+  const double d = spec.delete_existence;
+  const double predicted = d / (1.0 - delta + delta * d);
+  return std::min(1.0, predicted / spec.survival_probability);
+}
+
 LifeChange advance_life(TrackLife& life, bool detected, double position_sigma,
                         const config::TrackLifeSpec& spec) noexcept {
   LifeChange change;

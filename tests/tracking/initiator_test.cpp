@@ -90,6 +90,68 @@ TEST(Initiator, ChainWithoutItsThirdPlotWithinNLooksIsDropped) {
   EXPECT_TRUE(initiator.step(4, 40.0, {plot(4, 40.0, 7500, 0)}, kEverywhere).empty());
 }
 
+/// A chain of three plots east at 250 m/s (10, 20 and 30 s), completed and held by the
+/// tracker with existence 0.01.
+void hold_a_chain(Initiator& initiator) {
+  initiator.step(1, 10.0, {plot(1, 10.0, 0, 0)}, kEverywhere);
+  initiator.step(2, 20.0, {plot(2, 20.0, 2500, 0)}, kEverywhere);
+  const std::vector<Initiation> started =
+      initiator.step(3, 30.0, {plot(3, 30.0, 5000, 0)}, kEverywhere);
+  ASSERT_EQ(started.size(), 1u);
+  EXPECT_FALSE(started.front().held);
+  initiator.hold(started.front(), 0.01);
+  EXPECT_EQ(initiator.candidates(), 1u);
+}
+
+TEST(Initiator, AHeldChainCompletesAgainWithItsNextPlot) {
+  Initiator initiator(config::InitiationSpec{}, 2);
+  hold_a_chain(initiator);
+  // Its next plot, on its constant-velocity line, completes it again, held, with the
+  // existence the tracker gave it.
+  const std::vector<Initiation>& again =
+      initiator.step(4, 40.0, {plot(9, 40.0, 0, 30000), plot(4, 40.0, 7500, 0)}, kEverywhere);
+  ASSERT_EQ(again.size(), 1u);
+  EXPECT_EQ(ids(again.front()), (std::vector<std::int64_t>{1, 2, 3, 4}));
+  EXPECT_TRUE(again.front().held);
+  EXPECT_EQ(again.front().existence, 0.01);
+  EXPECT_EQ(again.front().scans, 4);
+  EXPECT_EQ(again.front().last, 1);
+  EXPECT_EQ(initiator.candidates(), 0u);
+}
+
+TEST(Initiator, AHeldChainLookedAtWithoutAPlotIsDropped) {
+  // As its track would be: a look without a plot takes a weak track's existence under the
+  // deletion threshold.
+  Initiator initiator(config::InitiationSpec{}, 2);
+  hold_a_chain(initiator);
+  // A batch that does not cover it is no look: the chain waits.
+  const Initiator::Coverage nowhere = [](const Eigen::Vector3d&) { return false; };
+  EXPECT_TRUE(initiator.step(4, 40.0, {}, nowhere).empty());
+  EXPECT_EQ(initiator.candidates(), 1u);
+  // A look with no plot on its line drops it; the plot that comes a look later seeds anew.
+  EXPECT_TRUE(initiator.step(5, 44.0, {plot(8, 44.0, 0, 30000)}, kEverywhere).empty());
+  EXPECT_EQ(initiator.candidates(), 0u);
+  EXPECT_TRUE(initiator.step(6, 50.0, {plot(5, 50.0, 10000, 0)}, kEverywhere).empty());
+}
+
+TEST(Initiator, OnlyAHeldChainTakesAPlotATracksGateHolds) {
+  // A held chain is a track in waiting: it may take a plot in another track's gate, as its
+  // track would in the JPDA. An ordinary chain or a seed may not.
+  const std::vector<std::uint8_t> in_a_track_gate{1};
+  Initiator held(config::InitiationSpec{}, 2);
+  hold_a_chain(held);
+  EXPECT_EQ(held.step(4, 40.0, {plot(4, 40.0, 7500, 0)}, kEverywhere, {}, in_a_track_gate).size(),
+            1u);
+  Initiator ordinary(config::InitiationSpec{}, 2);
+  ordinary.step(1, 10.0, {plot(1, 10.0, 0, 0)}, kEverywhere);
+  ordinary.step(2, 20.0, {plot(2, 20.0, 2500, 0)}, kEverywhere);
+  ASSERT_EQ(ordinary.candidates(), 1u);
+  const std::size_t seeds = ordinary.seeds();
+  EXPECT_TRUE(
+      ordinary.step(3, 30.0, {plot(3, 30.0, 5000, 0)}, kEverywhere, {}, in_a_track_gate).empty());
+  EXPECT_EQ(ordinary.seeds(), seeds);  // nor does the plot seed a chain
+}
+
 TEST(Initiator, ThirdPlotIsGatedAlongTheLineOfSightByTheRangeSigma) {
   // A target 100 km north flying east at 200 m/s, seen every 4 s: 200 m cross-range sigma,
   // 30 m in range. The third plot's gate: four sigma plus a 6 g manoeuvre (480 m), 2080 m

@@ -81,6 +81,33 @@ TEST(TrackLife, ExistenceConfirmsAndDeletesOnItsThresholds) {
   EXPECT_TRUE(deleted);
 }
 
+TEST(TrackLife, ExistenceToOutliveAMissSeparatesTracksALookWithoutAPlotDeletes) {
+  const config::TrackLifeSpec s = existence_spec();
+  config::DetectabilitySpec detectability;
+  detectability.hide = 0.05;  // a fresh track's miss then weighs at P_D 0.855
+  const double pd = 0.9, pg = 0.999;
+  const double threshold = existence_to_outlive_a_miss(pd, pg, s, detectability);
+  ASSERT_GT(threshold, 0.0);
+  ASSERT_LT(threshold, s.confirm_existence);
+  const auto after_a_miss = [&](double existence) {
+    TrackLife life = initiated_life(3, 3);
+    life.existence = existence;
+    update_existence(life, 0.0, support_detection_probability(life, pd, detectability), pg, s);
+    return advance_life(life, false, 10.0, s);
+  };
+  // Just above the threshold a new track outlives a look without a plot; just below it is
+  // deleted by that look (the miss weighed as the tracker weighs it, on the detectability
+  // chain).
+  EXPECT_FALSE(after_a_miss(threshold * 1.001).deleted);
+  EXPECT_TRUE(after_a_miss(threshold * 0.999).deleted);
+  // Weighed at the full P_D (no masking), the miss costs more: below the threshold it still
+  // deletes.
+  detectability.hide = 0.0;
+  EXPECT_TRUE(after_a_miss(threshold * 0.999).deleted);
+  // M of N: the existence deletes no track, so none is too weak.
+  EXPECT_EQ(existence_to_outlive_a_miss(pd, pg, spec(), detectability), 0.0);
+}
+
 TEST(TrackLife, SupportIsTheLogRatioOfTheScansBestHypothesis) {
   // A miss: 1 - P_D P_G; a plot likelier than that: P_D L / lambda; never below the miss.
   EXPECT_NEAR(scan_support(0.0, 0.9, 0.999), std::log(1.0 - 0.9 * 0.999), 1e-12);

@@ -84,7 +84,7 @@ int run_track(const TrackOptions& options) {
   }
   ProgressBar progress(!options.quiet);
   std::vector<double> latency_ms;
-  std::size_t rejected_scans = 0, initiated = 0, refused = 0, max_tracks = 0;
+  std::size_t rejected_scans = 0, initiated = 0, refused = 0, held = 0, max_tracks = 0;
   std::chrono::microseconds predict{}, associate{}, manage{};
   const auto start = std::chrono::steady_clock::now();
   while (auto scan = reader->next()) {
@@ -109,6 +109,7 @@ int run_track(const TrackOptions& options) {
     }
     initiated += static_cast<std::size_t>(result.report.initiated);
     refused += static_cast<std::size_t>(result.report.initiations_refused);
+    held += static_cast<std::size_t>(result.report.chains_held);
     predict += result.report.predict;
     associate += result.report.associate;
     manage += result.report.manage;
@@ -135,13 +136,14 @@ int run_track(const TrackOptions& options) {
       stderr,
       "skytrack track: profile '{}': {} batches ({} skipped), {} plots ({} invalid, {} "
       "rejected as clutter), {} lines rejected, {} numeric failures\n"
-      "  tracks initiated {}, most at once {}; initiations refused (max_tentative) {}\n"
+      "  tracks initiated {}, most at once {}; initiations refused (max_tentative) {}; chains "
+      "held for their next plot {}\n"
       "  per batch: mean {:.3f} ms, p50 {:.3f} ms, p99 {:.3f} ms, max {:.3f} ms; wall {:.2f} s; "
       "peak RSS {:.1f} MiB\n"
       "  stages, mean per batch: gating {:.3f} ms, association {:.3f} ms, management {:.3f} ms\n",
       profile.identity.name, c.scans_processed, c.scans_rejected, c.plots_processed,
       c.plots_invalid, c.plots_rejected_clutter, reader->counts().rejected_lines,
-      c.numeric_failures, initiated, max_tracks, refused, mean(latency_ms),
+      c.numeric_failures, initiated, max_tracks, refused, held, mean(latency_ms),
       percentile(latency_ms, 0.5), percentile(latency_ms, 0.99),
       latency_ms.empty() ? 0.0 : *std::max_element(latency_ms.begin(), latency_ms.end()), wall,
       peak_rss_mib(), per_batch_ms(predict, latency_ms.size()),

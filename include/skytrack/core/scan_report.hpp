@@ -22,6 +22,7 @@ struct ScanReport {
   int tentative = 0, confirmed = 0, coasting = 0;
   int initiated = 0, deleted = 0;
   int initiations_refused = 0;  // chains that started no track: initiation.max_tentative held
+  int chains_held = 0;  // completed chains too weak to outlive a miss, held for their next plot
   // Track updates in which a mode kept its prediction (an innovation covariance that would
   // not factorise), and associations that failed (JpdaStatus other than ok).
   int numeric_failures = 0;

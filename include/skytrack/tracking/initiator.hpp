@@ -5,7 +5,8 @@
 // [min_speed, max_speed] forms a candidate chain, which grows by the nearest plot to its
 // constant-velocity prediction, the nearest chain-plot pairs first. A chain with M plots
 // within N scans becomes a tentative track; chains that cannot reach M in time are dropped.
-// Chains are cheap (no filter), so dense clutter costs seeds, not IMM tracks.
+// Chains are cheap (no filter), so dense clutter costs seeds, not IMM tracks; a completed
+// chain the tracker finds too weak for a track waits for its next plot as a chain (hold).
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -40,8 +41,10 @@ struct ChainManoeuvre {
 /// A chain of plots, oldest first, ready to start a track.
 struct Initiation {
   std::vector<PlotMeasurement> plots;
-  int scans = 0;  // scans spanned, first to last plot inclusive
-  int last = -1;  // plots.back()'s index in the plots of the step that completed it
+  int scans = 0;           // scans spanned, first to last plot inclusive
+  int last = -1;           // plots.back()'s index in the plots of the step that completed it
+  bool held = false;       // completed once before and held back for this plot (Initiator::hold)
+  double existence = 0.0;  // held: the existence its plots but the last gave it (hold)
 };
 
 class Initiator {
@@ -56,16 +59,27 @@ class Initiator {
   /// that cover them ("looks"), at most once per half revolution of their sensor's sweep, so
   /// a revolution reported in sectors counts once. Returns the chains completed by this batch.
   /// `positions`: the plots' approximate_position, when the caller has them (else computed).
+  /// `track_plots`: per plot, 1 for one a track's gate holds (the tracker decides), which
+  /// only a held chain, a track in waiting, may take; empty: none.
   const std::vector<Initiation>& step(std::uint64_t batch, double time, std::uint32_t sensor,
                                       double sweep, const std::vector<PlotMeasurement>& plots,
                                       const Coverage& covered,
-                                      std::span<const Eigen::Vector3d> positions = {});
+                                      std::span<const Eigen::Vector3d> positions = {},
+                                      std::span<const std::uint8_t> track_plots = {});
   /// The same for a snapshot sensor, whose batches are a look at everything (the plots'
   /// sweeps are set to one revolution per batch).
   const std::vector<Initiation>& step(std::uint64_t batch, double time,
                                       const std::vector<PlotMeasurement>& plots,
                                       const Coverage& covered,
-                                      std::span<const Eigen::Vector3d> positions = {});
+                                      std::span<const Eigen::Vector3d> positions = {},
+                                      std::span<const std::uint8_t> track_plots = {});
+
+  /// Keeps a chain `step` just completed (its last M plots) as a chain that must take a plot
+  /// in its next look: it completes again with that plot (Initiation::held, carrying
+  /// `existence`, the tracker's weighing of its plots so far), or is dropped by a look
+  /// without one. For a chain too weak to outlive a missed look as a track: as a chain it
+  /// costs no filter. Call before the next step.
+  void hold(const Initiation& initiation, double existence);
 
   /// Appends each candidate chain's search region at `time`: where its next plot may lie.
   void search_regions(double time, std::vector<SearchRegion>& out) const;
@@ -90,6 +104,9 @@ class Initiator {
     int looks = 0;        // looks spanned, from the first plot's on, inclusive
     double looked = 0.0;  // the sweep when it last took a plot or was looked at
     int last = -1;        // its last plot's index in the batch that gave it
+    int held_plots = 0;   // plots and looks when it was held (hold); 0 plots: not held
+    int held_looks = 0;
+    double held_existence = 0.0;
   };
   struct Extension {  // a plot in a chain's gate, at `distance` from its prediction
     double distance = 0.0;
@@ -107,6 +124,8 @@ class Initiator {
   std::vector<Seed> seeds_;
   std::vector<Chain> chains_;
   std::vector<Initiation> completed_;
+  std::uint64_t batch_ = 0;  // the last step's batch and sweep
+  double sweep_ = 0.0;
   std::vector<PlotMeasurement> snapshot_plots_;
   struct SeedGroup {  // the seeds of one batch: seeds_[begin, end)
     std::size_t begin = 0, end = 0;
@@ -120,6 +139,8 @@ class Initiator {
   std::vector<Eigen::Vector3d> seed_positions_;
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> used_;
+  std::span<const std::uint8_t> track_plots_;  // this step's (step)
+  bool track_plot(std::size_t i) const { return !track_plots_.empty() && track_plots_[i] != 0; }
   std::vector<Extension> extensions_;
   std::vector<int> neighbours_;
   std::vector<double> radii_, cell_radii_;  // each chain's search radius (-1: none this batch)

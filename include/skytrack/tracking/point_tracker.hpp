@@ -76,6 +76,7 @@ class PointTracker final : public Estimator {
   /// True when plot j may feed the initiator: in no gate, or in gates but unexplained.
   bool free_for_initiation(const PointLook& look, std::size_t j) const;
   void initiate(PointLook& look);
+  bool confirmed_by_existence(const TrackLife& life) const;
   /// The branch layer, or with branching off the hooks that answer as the plain tracker.
   BranchHooks& hooks() { return branches_ ? static_cast<BranchHooks&>(*branches_) : plain_; }
 
@@ -89,13 +90,20 @@ class PointTracker final : public Estimator {
   std::optional<BranchLayer> branches_;  // branching on
   BranchHooks plain_;                    // branching off: the plain tracker's answers
   std::uint64_t batches_ = 0;
+  // A completed chain whose existence is below this waits for its next plot as a chain
+  // (existence_to_outlive_a_miss): as a track, a look without that plot would delete it.
+  double outlive_miss_existence_ = 0.0;
 
   // Per-look workspaces (reused).
   std::vector<TrackEvent> events_;                   // held until the look has decided them all
   std::vector<std::uint8_t> used_by_branch_, held_;  // per plot (point_look.hpp)
   std::vector<int> initiation_plots_;                // point_look.hpp
+  std::vector<std::uint8_t> track_plots_;            // Initiator::step's
   ImmEstimate start_predicted_;                      // start_estimate's (point_look.hpp)
   HypothesisShapes start_shapes_;
+  std::vector<int> start_neighbours_;
+  std::vector<PlotHypothesis> start_hypotheses_;
+  std::vector<double> start_beta_;
   std::vector<std::pair<std::int64_t, std::int64_t>> renamed_;
   std::vector<int> kind_list_;
 };

@@ -80,6 +80,14 @@ double support_detection_probability(const TrackLife& life, double detection_pro
 void update_detectability(TrackLife& life, double likelihood_ratio, double detection_probability,
                           double gate_probability, const config::DetectabilitySpec& spec) noexcept;
 
+/// The least existence with which a new track outlives its next look if that look has no plot
+/// for it: below it, the miss takes the existence under delete_existence. The miss is weighed
+/// at P_D times a fresh track's predicted detectability (the most lenient weighing a track's
+/// miss gets). 0 when tracks are confirmed by M of N (existence deletes none then).
+double existence_to_outlive_a_miss(double detection_probability, double gate_probability,
+                                   const config::TrackLifeSpec& spec,
+                                   const config::DetectabilitySpec& detectability) noexcept;
+
 /// Starts a life from an initiation that used `plots` plots over `scans` scans.
 TrackLife initiated_life(int plots, int scans) noexcept;
 
