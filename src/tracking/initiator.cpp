@@ -91,25 +91,21 @@ Initiator::Initiator(const config::InitiationSpec& spec, int dims, ChainManoeuvr
 const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
                                                const std::vector<PlotMeasurement>& plots,
                                                const Coverage& covered,
-                                               std::span<const Eigen::Vector3d> positions,
-                                               std::span<const std::uint8_t> track_plots) {
+                                               std::span<const Eigen::Vector3d> positions) {
   // A snapshot sensor: each batch is one revolution of sweep after the last.
   const double sweep = 2.0 * kHalfTurn * static_cast<double>(batch);
   snapshot_plots_ = plots;
   for (PlotMeasurement& p : snapshot_plots_) p.sweep = sweep;
   return step(batch, time, plots.empty() ? 0 : plots.front().sensor, sweep, snapshot_plots_,
-              covered, positions, track_plots);
+              covered, positions);
 }
 
 const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
                                                std::uint32_t sensor, double sweep,
                                                const std::vector<PlotMeasurement>& plots,
                                                const Coverage& covered,
-                                               std::span<const Eigen::Vector3d> positions,
-                                               std::span<const std::uint8_t> track_plots) {
-  assert(track_plots.empty() || track_plots.size() == plots.size());
+                                               std::span<const Eigen::Vector3d> positions) {
   completed_.clear();
-  track_plots_ = track_plots;
   batch_ = batch;
   sweep_ = sweep;
   // This batch is a look at every seed and chain it covers that the beam has not passed
@@ -141,11 +137,8 @@ const std::vector<Initiation>& Initiator::step(std::uint64_t batch, double time,
   extend_chains(batch, plots);
   pair_with_seeds(batch, plots);
   for (std::size_t i = 0; i < plots.size(); ++i) {
-    if (!used_[i] && !track_plot(i)) {
-      seeds_.push_back({plots[i], positions_[i], batch, 0, plots[i].sweep});
-    }
+    if (!used_[i]) seeds_.push_back({plots[i], positions_[i], batch, 0, plots[i].sweep});
   }
-  track_plots_ = {};
   // Chains with M plots become tracks; a held chain completes again with its next plot.
   for (std::size_t c = 0; c < chains_.size();) {
     Chain& chain = chains_[c];
@@ -240,7 +233,6 @@ void Initiator::extend_chains(std::uint64_t batch, const std::vector<PlotMeasure
     for (const int j : neighbours_) {
       const double dt = plots[j].time - chain.time;
       if (dt <= 0.0 || same_revolution(chain.plots.back(), plots[j])) continue;
-      if (chain.held_plots == 0 && track_plot(static_cast<std::size_t>(j))) continue;
       const Eigen::Vector3d expected = chain.position + chain.velocity * dt;
       const double manoeuvre = 0.5 * accel * dt * dt;
       const double gate = 4.0 * (sigma_last + position_sigma(plots[j])) + manoeuvre;
@@ -311,7 +303,7 @@ void Initiator::pair_with_seeds(std::uint64_t batch, const std::vector<PlotMeasu
     seed_indices_[g].build(seed_positions_, dims_, cell);
   }
   for (std::size_t i = 0; i < plots.size(); ++i) {
-    if (used_[i] || track_plot(i)) continue;
+    if (used_[i]) continue;
     // The seed whose implied speed is plausible and whose distance is smallest (the first in
     // seed order among equals). The youngest batch's seeds are searched first: the nearest
     // found bounds the search among the older ones, whose speed discs are wider.

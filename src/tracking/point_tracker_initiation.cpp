@@ -186,19 +186,16 @@ void PointTracker::initiate(PointLook& look) {
   std::vector<PlotMeasurement> unused;
   std::vector<Eigen::Vector3d> unused_positions;
   look.initiation_plots.clear();
-  track_plots_.clear();
   int clouded = 0;
   for (std::size_t j = 0; j < pre.plots().size(); ++j) {
-    if (pre.rejected(j) || look.used_by_branch[j]) continue;
-    const bool free = free_for_initiation(look, j);
+    if (!free_for_initiation(look, j)) continue;
     if (pre.in_cloud(j)) {
-      clouded += free ? 1 : 0;
+      ++clouded;
       continue;
     }
     unused.push_back(pre.plots()[j]);
     unused_positions.push_back(pre.positions()[j]);
     look.initiation_plots.push_back(static_cast<int>(j));
-    track_plots_.push_back(free ? 0 : 1);  // a held chain, a track in waiting, may take it
   }
   if (clouded > 0) {
     report.plots_in_clouds += clouded;
@@ -214,9 +211,8 @@ void PointTracker::initiate(PointLook& look) {
         return t.branch == BranchType::kFather && t.life.status == TrackStatus::kTentative;
       }));
   int refused = 0;
-  for (const Initiation& initiation :
-       initiator_.step(batches_, scan.time, pre.sensor(), pre.sweep(), unused, covered,
-                       unused_positions, track_plots_)) {
+  for (const Initiation& initiation : initiator_.step(
+           batches_, scan.time, pre.sensor(), pre.sweep(), unused, covered, unused_positions)) {
     if (hooks().take_chain(initiation, report, frame)) continue;
     if (tentative >= profile_.point.initiation.max_tentative) {
       ++refused;

@@ -134,24 +134,6 @@ TEST(Initiator, AHeldChainLookedAtWithoutAPlotIsDropped) {
   EXPECT_TRUE(initiator.step(6, 50.0, {plot(5, 50.0, 10000, 0)}, kEverywhere).empty());
 }
 
-TEST(Initiator, OnlyAHeldChainTakesAPlotATracksGateHolds) {
-  // A held chain is a track in waiting: it may take a plot in another track's gate, as its
-  // track would in the JPDA. An ordinary chain or a seed may not.
-  const std::vector<std::uint8_t> in_a_track_gate{1};
-  Initiator held(config::InitiationSpec{}, 2);
-  hold_a_chain(held);
-  EXPECT_EQ(held.step(4, 40.0, {plot(4, 40.0, 7500, 0)}, kEverywhere, {}, in_a_track_gate).size(),
-            1u);
-  Initiator ordinary(config::InitiationSpec{}, 2);
-  ordinary.step(1, 10.0, {plot(1, 10.0, 0, 0)}, kEverywhere);
-  ordinary.step(2, 20.0, {plot(2, 20.0, 2500, 0)}, kEverywhere);
-  ASSERT_EQ(ordinary.candidates(), 1u);
-  const std::size_t seeds = ordinary.seeds();
-  EXPECT_TRUE(
-      ordinary.step(3, 30.0, {plot(3, 30.0, 5000, 0)}, kEverywhere, {}, in_a_track_gate).empty());
-  EXPECT_EQ(ordinary.seeds(), seeds);  // nor does the plot seed a chain
-}
-
 TEST(Initiator, ThirdPlotIsGatedAlongTheLineOfSightByTheRangeSigma) {
   // A target 100 km north flying east at 200 m/s, seen every 4 s: 200 m cross-range sigma,
   // 30 m in range. The third plot's gate: four sigma plus a 6 g manoeuvre (480 m), 2080 m

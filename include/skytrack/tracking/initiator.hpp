@@ -59,20 +59,16 @@ class Initiator {
   /// that cover them ("looks"), at most once per half revolution of their sensor's sweep, so
   /// a revolution reported in sectors counts once. Returns the chains completed by this batch.
   /// `positions`: the plots' approximate_position, when the caller has them (else computed).
-  /// `track_plots`: per plot, 1 for one a track's gate holds (the tracker decides), which
-  /// only a held chain, a track in waiting, may take; empty: none.
   const std::vector<Initiation>& step(std::uint64_t batch, double time, std::uint32_t sensor,
                                       double sweep, const std::vector<PlotMeasurement>& plots,
                                       const Coverage& covered,
-                                      std::span<const Eigen::Vector3d> positions = {},
-                                      std::span<const std::uint8_t> track_plots = {});
+                                      std::span<const Eigen::Vector3d> positions = {});
   /// The same for a snapshot sensor, whose batches are a look at everything (the plots'
   /// sweeps are set to one revolution per batch).
   const std::vector<Initiation>& step(std::uint64_t batch, double time,
                                       const std::vector<PlotMeasurement>& plots,
                                       const Coverage& covered,
-                                      std::span<const Eigen::Vector3d> positions = {},
-                                      std::span<const std::uint8_t> track_plots = {});
+                                      std::span<const Eigen::Vector3d> positions = {});
 
   /// Keeps a chain `step` just completed (its last M plots) as a chain that must take a plot
   /// in its next look: it completes again with that plot (Initiation::held, carrying
@@ -139,8 +135,6 @@ class Initiator {
   std::vector<Eigen::Vector3d> seed_positions_;
   std::vector<Eigen::Vector3d> positions_;
   std::vector<std::uint8_t> used_;
-  std::span<const std::uint8_t> track_plots_;  // this step's (step)
-  bool track_plot(std::size_t i) const { return !track_plots_.empty() && track_plots_[i] != 0; }
   std::vector<Extension> extensions_;
   std::vector<int> neighbours_;
   std::vector<double> radii_, cell_radii_;  // each chain's search radius (-1: none this batch)

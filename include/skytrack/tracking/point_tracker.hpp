@@ -98,7 +98,6 @@ class PointTracker final : public Estimator {
   std::vector<TrackEvent> events_;                   // held until the look has decided them all
   std::vector<std::uint8_t> used_by_branch_, held_;  // per plot (point_look.hpp)
   std::vector<int> initiation_plots_;                // point_look.hpp
-  std::vector<std::uint8_t> track_plots_;            // Initiator::step's
   ImmEstimate start_predicted_;                      // start_estimate's (point_look.hpp)
   HypothesisShapes start_shapes_;
   std::vector<int> start_neighbours_;
