@@ -66,8 +66,9 @@ struct PointLook {
 
 /// The start of a new track's estimate (two-point, then IMM updates with the chain's further
 /// plots, which also update its existence: the chain's last plot, from this look, is weighed
-/// against the clutter density estimated round it, as a track's plots are). None, with the
-/// existence updated but no estimate made, when the existence ends below `hold_below`.
+/// against the clutter density estimated round it, as a track's plots are; a held chain's last
+/// plot as its track's first look would weigh it, over every plot in its gate). None, with
+/// the existence updated but no estimate made, when the existence ends below `hold_below`.
 std::optional<ImmEstimate> start_estimate(PointLook& look, const Initiation& initiation,
                                           TrackLife& life, double hold_below = 0.0);
 
