@@ -10,6 +10,7 @@
 namespace skytrack {
 namespace {
 
+using testing::radar_scenario;
 using testing::target;
 using testing::test_profile;
 using testing::track_scenario;
@@ -27,22 +28,6 @@ sim::Scenario cartesian_scenario(double sigma, double clutter) {
   s.clutter.region = sim::ClutterSpec::Region::kBox;
   s.clutter.x = {-20000.0, 20000.0};
   s.clutter.y = {-20000.0, 20000.0};
-  return s;
-}
-
-sim::Scenario radar_scenario(double clutter, sim::SensorSpec::Antenna antenna) {
-  sim::Scenario s;
-  s.name = "radar";
-  s.dimensions = 2;
-  s.duration = 200.0;
-  s.sensor.scan_period = 2.0;
-  s.sensor.antenna = antenna;
-  s.sensor.detection_probability = 0.9;
-  s.sensor.sigma.range = 20.0;
-  s.sensor.sigma.azimuth = 0.001;
-  s.sensor.max_range = 60000.0;
-  s.clutter.mean = clutter;
-  s.clutter.range = {1000.0, 60000.0};
   return s;
 }
 
