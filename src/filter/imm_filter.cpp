@@ -113,6 +113,7 @@ ImmFilter::ImmFilter(std::vector<AnyMotionModel> models, std::vector<std::string
       layout_(layout),
       measurement_(std::move(measurement)) {
   assert(!models_.empty() && models_.size() <= kMaxImmModes);
+  memos_.resize(models_.size());
   assert(names_.size() == models_.size());
   assert(transition_.rows() == mode_count() && transition_.cols() == mode_count());
   assert(transition_interval_ >= 0.0);
@@ -225,7 +226,7 @@ void ImmFilter::predict_step(const ImmEstimate& posterior, double time, int cert
     // mode's own (its mixing weight is 1, the others' 0), so one prediction serves them all.
     for (int j = 0; j < n; ++j) c[j] = transition(certain, j);
     const auto k = static_cast<std::size_t>(certain);
-    out.modes[k] = skytrack::predict(models_[k], layout_, posterior.modes[k], dt);
+    skytrack::predict(models_[k], layout_, posterior.modes[k], dt, memos_[k], out.modes[k]);
     for (std::size_t j = 0; j < out.modes.size(); ++j) {
       if (j != k) out.modes[j] = out.modes[k];
     }
@@ -238,9 +239,9 @@ void ImmFilter::predict_step(const ImmEstimate& posterior, double time, int cert
         const Gaussian mixed = moment_match(posterior.modes, [&](std::size_t i) {
           return transition(static_cast<Eigen::Index>(i), j) * posterior.probabilities[i] / c[j];
         });
-        out.modes[j] = skytrack::predict(models_[j], layout_, mixed, dt);
+        skytrack::predict(models_[j], layout_, mixed, dt, memos_[j], out.modes[j]);
       } else {  // unreachable mode: nothing to mix, carry its own estimate
-        out.modes[j] = skytrack::predict(models_[j], layout_, posterior.modes[j], dt);
+        skytrack::predict(models_[j], layout_, posterior.modes[j], dt, memos_[j], out.modes[j]);
       }
     }
   }

@@ -52,23 +52,43 @@ void propagate_covariance(const StateMat& F, const StateMat& Q, double dt, State
   P = 0.5 * (upper + upper.transpose());
 }
 
+/// x' = F x, at a compile-time size when the state's is a common one.
+void transition_mean(const StateMat& F, const StateVec& x, StateVec& out) noexcept {
+  if (!with_fixed_state_size(static_cast<int>(x.size()), [&](auto n) {
+        constexpr int N = decltype(n)::value;
+        const Eigen::Matrix<double, N, N> f = F;
+        const Eigen::Matrix<double, N, 1> v = x;
+        out = f * v;
+      })) {
+    out.noalias() = F * x;
+  }
+}
+
 template <class Model>
-Gaussian predict_with(const Model& model, const StateLayout& layout, const Gaussian& prior,
-                      double dt) noexcept {
+void predict_with(const Model& model, const StateLayout& layout, const Gaussian& prior, double dt,
+                  DiscretisationMemo* memo, Gaussian& out) noexcept {
   assert(prior.mean.size() == layout.size() && prior.covariance.rows() == layout.size());
-  if (dt == 0.0) return prior;
-  StateMat F, Q;
-  Gaussian out;
+  assert(&out != &prior);
+  if (dt == 0.0) {
+    out = prior;
+    return;
+  }
   if constexpr (kNonLinear<Model>) {
+    StateMat F, Q;
     model.linearise(layout, prior.mean, dt, F, Q);
     out.mean = model.propagate(layout, prior.mean, dt);
+    out.covariance = prior.covariance;
+    propagate_covariance(F, Q, dt, out.covariance);
   } else {
-    model.discretise(layout, dt, F, Q);
-    out.mean.noalias() = F * prior.mean;
+    const auto discretise = [&](double interval, StateMat& F, StateMat& Q) {
+      model.discretise(layout, interval, F, Q);
+    };
+    DiscretisationMemo once;  // without a memo, one used once
+    const DiscretisationMemo::Entry& d = (memo != nullptr ? *memo : once).at(dt, discretise);
+    transition_mean(d.F, prior.mean, out.mean);
+    out.covariance = prior.covariance;
+    propagate_covariance(d.F, d.Q, dt, out.covariance);
   }
-  out.covariance = prior.covariance;
-  propagate_covariance(F, Q, dt, out.covariance);
-  return out;
 }
 
 }  // namespace
@@ -117,8 +137,16 @@ bool supports(const AnyMotionModel& model, const StateLayout& layout) noexcept {
 
 Gaussian predict(const AnyMotionModel& model, const StateLayout& layout, const Gaussian& prior,
                  double dt) noexcept {
-  return std::visit([&](const auto& concrete) { return predict_with(concrete, layout, prior, dt); },
-                    model);
+  Gaussian out;
+  std::visit([&](const auto& concrete) { predict_with(concrete, layout, prior, dt, nullptr, out); },
+             model);
+  return out;
+}
+
+void predict(const AnyMotionModel& model, const StateLayout& layout, const Gaussian& prior,
+             double dt, DiscretisationMemo& memo, Gaussian& out) noexcept {
+  std::visit([&](const auto& concrete) { predict_with(concrete, layout, prior, dt, &memo, out); },
+             model);
 }
 
 }  // namespace skytrack

@@ -126,6 +126,51 @@ TYPED_TEST(MotionModelContract, LinearDiscretisationComposesOverSplitIntervals) 
   }
 }
 
+TYPED_TEST(MotionModelContract, APredictionThroughTheMemoIsThePlainPredictionToTheBit) {
+  // GIVEN one memo for the model, and intervals that repeat, alternate, and replace its two
+  // kept entries (a snapshot radar's 4 s, a missed look's 8 s, a rotating radar's odd ones)
+  for (const StateLayout& layout : this->layouts()) {
+    const AnyMotionModel model = TypeParam::model();
+    DiscretisationMemo memo;
+    Gaussian prior;
+    prior.mean = this->some_state(layout);
+    const int n = layout.size();
+    const Eigen::MatrixXd A = Eigen::MatrixXd::Random(n, n);
+    prior.covariance = A * A.transpose() + Eigen::MatrixXd::Identity(n, n);
+    Gaussian through_memo;
+    for (double dt : {4.0, 4.0, 8.0, 4.0, 8.0, 3.7, 4.0, 0.0, -2.5, 3.7, 4.0}) {
+      // WHEN predicted through the memo and without it
+      predict(model, layout, prior, dt, memo, through_memo);
+      const Gaussian plain = predict(model, layout, prior, dt);
+      // THEN the numbers are identical, not just close
+      EXPECT_EQ(through_memo.mean, plain.mean) << "dt " << dt;
+      EXPECT_EQ(through_memo.covariance, plain.covariance) << "dt " << dt;
+    }
+  }
+}
+
+TEST(DiscretisationMemo, DiscretisesEachOfItsLastTwoIntervalsOnce) {
+  DiscretisationMemo memo;
+  int discretised = 0;
+  const auto discretise = [&](double dt, StateMat& F, StateMat& Q) {
+    ++discretised;
+    F = StateMat::Identity(4, 4) * dt;
+    Q = StateMat::Identity(4, 4);
+  };
+  // GIVEN predictions over 4 s and 8 s, alternating; THEN each is discretised once
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_EQ(memo.at(4.0, discretise).F(0, 0), 4.0);
+    EXPECT_EQ(memo.at(8.0, discretise).F(0, 0), 8.0);
+  }
+  EXPECT_EQ(discretised, 2);
+  // WHEN a third interval comes; THEN it replaces the older entry, and the newer stays
+  EXPECT_EQ(memo.at(3.0, discretise).F(0, 0), 3.0);
+  EXPECT_EQ(memo.at(8.0, discretise).F(0, 0), 8.0);
+  EXPECT_EQ(discretised, 3);
+  EXPECT_EQ(memo.at(4.0, discretise).F(0, 0), 4.0);
+  EXPECT_EQ(discretised, 4);
+}
+
 TYPED_TEST(MotionModelContract, ZeroDtIsIdentity) {
   const StateLayout layout = this->layouts().front();
   Gaussian prior;

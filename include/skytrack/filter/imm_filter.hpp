@@ -181,6 +181,8 @@ class ImmFilter {
   /// A hypothesis' likelihood (mixed over the modes' priors) and NIS range from its per_mode.
   void weigh(const ImmEstimate& predicted, PlotHypothesis& out) const noexcept;
   std::vector<AnyMotionModel> models_;
+  // Each mode's last discretisations (a cache: predictions stay const; one filter per thread).
+  mutable std::vector<DiscretisationMemo> memos_;
   std::vector<std::string> names_;
   Eigen::MatrixXd transition_;
   double transition_interval_ = 0.0;

@@ -12,6 +12,7 @@
 //            F^-1 (x - w) with w the noise accumulated over the interval (Bar-Shalom 2002,
 //            "Update with out-of-sequence measurements", retrodiction without the
 //            cross-covariance terms).
+#include <array>
 #include <variant>
 #include <vector>
 
@@ -42,5 +43,40 @@ bool supports(const AnyMotionModel& model, const StateLayout& layout) noexcept;
 /// support the model and match the Gaussian's size.
 Gaussian predict(const AnyMotionModel& model, const StateLayout& layout, const Gaussian& prior,
                  double dt) noexcept;
+
+/// A linear model's transition and process noise for the last two intervals it was
+/// discretised over. A snapshot radar's tracks and chains are predicted over the same few
+/// intervals every scan, and a turn's discretisation costs its sines and cosines each time.
+/// One memo per model and layout; not shared between threads.
+class DiscretisationMemo {
+ public:
+  struct Entry {
+    double dt = 0.0;
+    bool valid = false;
+    StateMat F, Q;
+  };
+  /// The entry for dt, discretised by `discretise(dt, F, Q)` when it is not kept.
+  template <class Discretise>
+  const Entry& at(double dt, const Discretise& discretise) {
+    for (const Entry& e : entries_) {
+      if (e.valid && e.dt == dt) return e;
+    }
+    Entry& e = entries_[next_];
+    next_ = 1 - next_;
+    discretise(dt, e.F, e.Q);
+    e.dt = dt;
+    e.valid = true;
+    return e;
+  }
+
+ private:
+  std::array<Entry, 2> entries_;
+  int next_ = 0;
+};
+
+/// The same prediction written into `out` (not `prior`), a linear model's discretisation
+/// taken from `memo` when it holds dt: the same numbers as predict().
+void predict(const AnyMotionModel& model, const StateLayout& layout, const Gaussian& prior,
+             double dt, DiscretisationMemo& memo, Gaussian& out) noexcept;
 
 }  // namespace skytrack
