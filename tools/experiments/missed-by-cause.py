@@ -1,22 +1,29 @@
 #!/usr/bin/env python3
 """Missed targets per scan of a snapshot radar load, split by what explains them: beyond the
 radar's range; not yet detected M times within N looks, plus the one look the existence test
-takes to confirm (the earliest an M-of-N initiator can report the target); and the rest, by
-how many looks later than that the target is missed.
+takes to confirm (the earliest an M-of-N initiator can report the target); and the rest
+("later than that"), also counted scan by scan.
 
 A target counts as tracked in a scan when a confirmed or coasting track lies within the cutoff
 of its truth position, tracks and targets paired nearest first (as `skytrack eval` pairs them
-within its cutoff). A target is detected in a scan when a plot, converted with the scan's
-platform position (azimuth clockwise from north), lies within 1 km of its truth position.
+within its cutoff). A target is detected in a scan when a plot lies within --detected (1 km)
+of its truth position: a polar plot converted with the scan's platform position (azimuth
+clockwise from north), a Cartesian one as it is.
 
-Usage: missed-by-cause.py TRUTH TRACKS PLOTS [--range M] [--cutoff M] [--m M] [--n N]
+Usage: missed-by-cause.py TRUTH TRACKS PLOTS [--range M] [--cutoff M] [--detected M] [--m M]
+                          [--n N]
 """
 import argparse
 import json
 import math
 from collections import Counter, defaultdict
 
-DETECTED = 1000.0  # [m] a plot this near the truth is the target's
+
+
+def dist(a, b):
+    """Euclidean distance over the coordinates both have (a 2-D truth against a 3-D plot)."""
+    n = min(len(a), len(b))
+    return math.dist(a[:n], b[:n])
 
 
 def read_frames(path, key):
@@ -28,12 +35,17 @@ def read_frames(path, key):
 
 
 def plot_positions(scan):
+    """The scan's plots as x, y, z (polar plots converted; a 2-D plot lies at the platform's
+    height), and the platform's position."""
     p0 = scan.get("platform", {}).get("position", [0.0, 0.0, 0.0])
     out = []
     for p in scan["plots"]:
-        r, az, el = p["range"], p["azimuth"], p.get("elevation", 0.0)
-        out.append((p0[0] + r * math.cos(el) * math.sin(az), p0[1] + r * math.cos(el) * math.cos(az),
-                    p0[2] + r * math.sin(el)))
+        if "range" in p:
+            r, az, el = p["range"], p["azimuth"], p.get("elevation", 0.0)
+            out.append((p0[0] + r * math.cos(el) * math.sin(az),
+                        p0[1] + r * math.cos(el) * math.cos(az), p0[2] + r * math.sin(el)))
+        else:
+            out.append((p["x"], p["y"], p.get("z", p0[2])))
     return out, p0
 
 
@@ -44,6 +56,7 @@ def main():
     ap.add_argument("plots")
     ap.add_argument("--range", type=float, default=150000.0, help="radar range [m]")
     ap.add_argument("--cutoff", type=float, default=2000.0, help="track-to-target distance [m]")
+    ap.add_argument("--detected", type=float, default=1000.0, help="plot-to-target distance [m]")
     ap.add_argument("--m", type=int, default=3)
     ap.add_argument("--n", type=int, default=4)
     a = ap.parse_args()
@@ -55,8 +68,8 @@ def main():
     for t in times:
         plots, p0 = plot_positions(scans[t]) if t in scans else ([], [0.0, 0.0, 0.0])
         for i, p in truth[t].items():
-            detected[i].append(any(math.dist(q, p) < DETECTED for q in plots))
-            in_range[i].append(math.dist(p, p0) <= a.range)
+            detected[i].append(any(dist(q, p) < a.detected for q in plots))
+            in_range[i].append(dist(p, p0) <= a.range)
     earliest = {}  # the look after the M-th detection within N looks, plus one to confirm
     for i, d in detected.items():
         earliest[i] = math.inf
@@ -67,8 +80,8 @@ def main():
     causes, later = Counter(), Counter()
     for k, t in enumerate(times):
         firm = [x["position"] for x in tracks.get(t, []) if x["status"] in ("confirmed", "coasting")]
-        pairs = sorted((math.dist(p, q), i, j) for i, p in truth[t].items()
-                       for j, q in enumerate(firm) if math.dist(p, q) < a.cutoff)
+        pairs = sorted((dist(p, q), i, j) for i, p in truth[t].items()
+                       for j, q in enumerate(firm) if dist(p, q) < a.cutoff)
         tracked, used = set(), set()
         for _, i, j in pairs:
             if i not in tracked and j not in used:
