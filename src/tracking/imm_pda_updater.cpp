@@ -61,7 +61,6 @@ void ImmPdaUpdater::update_track(PointLook& look, int t, std::span<const int> ca
   const auto slot = static_cast<std::size_t>(t);
   if (!look.gater.covered(slot) && candidates.empty()) return;  // neither updated nor aged
   const config::TrackingProfile& profile = look.profile;
-  const double pd = profile.association.detection_probability;
   const bool valid = valid_association(beta_plots, beta_miss);
   const PlotRatios ratios =
       update(look, t, look.gater.candidates(), candidates, beta_plots, beta_miss, track.id);
@@ -70,12 +69,7 @@ void ImmPdaUpdater::update_track(PointLook& look, int t, std::span<const int> ca
   track.quality = 0.8 * track.quality + 0.2 * detection;
   // P_D on its detectability chain, as in its support: a target masked in a clutter area
   // is not evidence that there is none (IPDA with a detectability chain).
-  const bool clutter_area = look.gater.in_clutter_area(slot);
-  update_existence(
-      track.life, ratios.sum,
-      support_detection_probability(track.life, pd, detectability_at(profile, clutter_area)),
-      profile.association.gate_probability, profile.point.track_life);
-  add_support(profile, track.life, ratios.best, ratios.sum, clutter_area);
+  weigh_look(profile, track.life, ratios.best, ratios.sum, look.gater.in_clutter_area(slot));
   bool detected = detection > 0.5;
   detected = hooks.detected(t, valid, detected);
   const LifeChange change = advance_life(

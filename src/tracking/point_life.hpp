@@ -29,4 +29,15 @@ inline void add_support(const config::TrackingProfile& profile, TrackLife& life,
                        detectability_at(profile, clutter_area));
 }
 
+/// One look's weighing of a track by its gated plots (`best`, `sum` as for add_support): the
+/// existence update on P_D on its detectability chain, then its support.
+inline void weigh_look(const config::TrackingProfile& profile, TrackLife& life, double best,
+                       double sum, bool clutter_area) {
+  update_existence(life, sum,
+                   support_detection_probability(life, profile.association.detection_probability,
+                                                 detectability_at(profile, clutter_area)),
+                   profile.association.gate_probability, profile.point.track_life);
+  add_support(profile, life, best, sum, clutter_area);
+}
+
 }  // namespace skytrack::tracking_detail

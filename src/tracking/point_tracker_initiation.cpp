@@ -64,10 +64,7 @@ bool held_chain_look(PointLook& look, const ImmEstimate& predicted, TrackLife& l
   // As the gater marks a new track: in a clutter area unless the profile tells those apart
   // (branching.last_motion_false_plots), where a tentative track is not in one.
   const bool clutter_area = !(profile.point.branching.last_motion_false_plots > 0.0);
-  update_existence(life, ratios.sum,
-                   support_detection_probability(life, pd, detectability_at(profile, clutter_area)),
-                   pg, profile.point.track_life);
-  add_support(profile, life, ratios.best, ratios.sum, clutter_area);
+  weigh_look(profile, life, ratios.best, ratios.sum, clutter_area);
   if (life.existence < hold_below) return false;
   look.start_valid = false;
   if (look.start_hypotheses.empty()) {
