@@ -94,6 +94,27 @@ TEST_F(EndToEnd, InvalidConfigurationStartsNothing) {
   EXPECT_THAT(daemon.log(), ::testing::Not(HasSubstr("DDS:")));
 }
 
+TEST_F(EndToEnd, LatencyBenchmarkAtARadarsPeriodAnswersEveryScanNoSooner) {
+  // GIVEN skytrackd on the default profile
+  const std::string config = write_config(kProfile);
+  Child daemon({kDaemon, "--config", config}, path("daemon.log"));
+  ASSERT_TRUE(daemon.wait_for_log("running", 10s)) << daemon.log();
+
+  // WHEN the latency benchmark sends a scan every 100 ms, 2 of warm-up and 4 timed
+  const auto start = std::chrono::steady_clock::now();
+  const int code = run({kTool, "bench-latency", "--config", config, "--targets", "10", "--warmup",
+                        "2", "--scans", "4", "--period-ms", "100"},
+                       path("bench.log"), 60s);
+  const auto elapsed = std::chrono::steady_clock::now() - start;
+  daemon.signal(SIGTERM);
+  ASSERT_EQ(daemon.wait(5s), 0) << daemon.log();
+
+  // THEN every scan is answered, and the six went out at the period, not back to back
+  EXPECT_EQ(code, 0) << read_file(path("bench.log"));
+  EXPECT_THAT(read_file(path("bench.log")), HasSubstr("unanswered 0"));
+  EXPECT_GE(elapsed, 500ms);  // the sixth scan leaves five periods after the first
+}
+
 TEST_F(EndToEnd, ReplayWithoutADaemonGivesUpAfterItsWait) {
   simulate_and_track_offline();
   const std::string config = write_config(kProfile);

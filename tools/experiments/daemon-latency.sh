@@ -5,10 +5,13 @@
 # tracked offline (bench-latency --write-plots, then skytrack track: the tracking alone).
 # Loopback only: every process, ddsperf included, runs with config/dds/loopback.xml
 # (domain 231).
-# Usage: tools/experiments/daemon-latency.sh [scans=300]
+# With a period, each scan goes out period_ms after the one before, as a radar sends them,
+# instead of as soon as the previous one is answered.
+# Usage: tools/experiments/daemon-latency.sh [scans=300] [period_ms=0]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 scans=${1:-300}
+period=${2:-0}
 build=${SKYTRACK_BUILD_DIR:-$root/build}
 skytrack="$build/tools/skytrack/skytrack"
 skytrackd="$build/tools/skytrackd/skytrackd"
@@ -21,13 +24,13 @@ trap cleanup EXIT
 sed -e "s|^  domain: 0|  domain: $domain|" -e "s|profiles/default.yaml|$root/config/profiles/default.yaml|" \
   -e "s|level: info|level: warn|" "$root/config/skytrackd.yaml" >"$work/skytrackd.yaml"
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc) cores"
-echo "round trip PlotBatch -> skytrackd -> TrackBatch; floor: ddsperf ping/pong (doubled one-way) at the same size"
+echo "round trip PlotBatch -> skytrackd -> TrackBatch, a scan every ${period} ms (0: back to back); floor: ddsperf ping/pong (doubled one-way) at the same size"
 for targets in 10 100 1000; do
   n=$scans
   [ "$targets" -ge 1000 ] && n=$((scans / 3))
   "$skytrackd" --config "$work/skytrackd.yaml" 2>"$work/daemon.log" &
   pids=($!)
-  line=$("$skytrack" bench-latency --config "$work/skytrackd.yaml" --targets "$targets" --scans "$n")
+  line=$("$skytrack" bench-latency --config "$work/skytrackd.yaml" --targets "$targets" --scans "$n" --period-ms "$period")
   echo "$line"
   sleep 1.2  # the next periodic status covers every timed scan
   "$skytrack" status --config "$work/skytrackd.yaml" |
@@ -42,7 +45,10 @@ for targets in 10 100 1000; do
   size=$(echo "$line" | sed -E 's/.*payload ~ *([0-9]+) B.*/\1/')
   ddsperf -D 7 -i $domain pong waitset >"$work/pong.log" 2>&1 &
   pids=($!)
-  ddsperf -D 5 -i $domain ping size "$size" waitset >"$work/ping.log" 2>&1 || true
+  # Paced, the floor is paced alike: ddsperf pings at the scans' rate.
+  rate=""
+  [ "$period" != 0 ] && rate=$(awk -v p="$period" 'BEGIN { printf "%gHz", 1000 / p }')
+  ddsperf -D 5 -i $domain ping $rate size "$size" waitset >"$work/ping.log" 2>&1 || true
   wait "${pids[0]}" 2>/dev/null || true
   pids=()
   # ddsperf prints one-way (half round trip) figures each second; take the last full second.

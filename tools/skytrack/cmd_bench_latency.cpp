@@ -10,6 +10,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -33,6 +34,7 @@ struct BenchOptions {
   int scans = 300;
   int warmup = 20;
   std::uint32_t sensor = 1;
+  double period_ms = 0.0;   // a scan every period_ms, as a radar sends them; 0: back to back
   std::string write_plots;  // the scans as a plot stream, no DDS
 };
 
@@ -112,7 +114,14 @@ int run_bench(const BenchOptions& o) {
   daemon::LatencyStats stats(static_cast<std::size_t>(o.scans));
   std::size_t payload = 0, lost = 0;
   dds::PlotBatchSample sample;
+  const auto period = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double, std::milli>(o.period_ms));
+  auto next = Clock::now();
   for (int k = 0; k < o.warmup + o.scans && !stop_requested(); ++k) {
+    if (o.period_ms > 0.0) {
+      std::this_thread::sleep_until(next);
+      next = std::max(next, Clock::now()) + period;  // an answer later than the period: no burst
+    }
     const PlotScan scan = make_scan(o.targets, k + 1, o.sensor, rng);
     if (!dds::to_dds(scan, sample)) return 2;
     payload = sample->plot_ids._length * (8 + 4 + 8 * dds::kPlotStride) + 200;
@@ -148,6 +157,11 @@ void add_bench_latency_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--scans", o->scans, "Timed scans")->default_val(300);
   cmd->add_option("--warmup", o->warmup, "Untimed scans first (track initiation)")->default_val(20);
   cmd->add_option("--sensor", o->sensor, "Sensor id of the scans")->default_val(1);
+  cmd->add_option("--period-ms", o->period_ms,
+                  "Send a scan every this many milliseconds, as a radar does (0: each scan as "
+                  "soon as the previous one is answered)")
+      ->default_val(0.0)
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--write-plots", o->write_plots,
                   "Write the warm-up and timed scans to this plot stream (JSON Lines) and exit, "
                   "without DDS: the same load offline for `skytrack track`");
