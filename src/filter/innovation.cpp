@@ -118,20 +118,20 @@ void finish_innovation(const GainMat& cross, Innovation& out) noexcept {
 
 }  // namespace filter_detail
 
-InnovationShape innovation_shape(const Gaussian& predicted, const StateLayout& layout,
-                                 const MeasurementModel& model) noexcept {
-  InnovationShape shape;
-  Innovation& out = shape.shared;
+namespace {
+
+/// H, R and S = H P H' + R of the EKF innovation into `out`, and P H' into `cross`. False
+/// when the prediction does not fit the layout or the model.
+bool innovation_covariance(const Gaussian& predicted, const StateLayout& layout,
+                           const MeasurementModel& model, Innovation& out,
+                           GainMat& cross) noexcept {
   const int n = layout.size();
   if (predicted.mean.size() != n || predicted.covariance.rows() != n ||
       predicted.covariance.cols() != n || model.state_dims != layout.dims) {
-    filter_detail::fail_innovation(out);
-    return shape;
+    return false;
   }
   out.H = model.jacobian(layout, predicted.mean);
-  shape.expected = model.measure(layout, predicted.mean);
   out.R = model.noise();
-  GainMat cross;  // P H'
   const bool fixed = with_fixed_sizes(
       static_cast<int>(out.H.cols()), static_cast<int>(out.H.rows()), [&](auto sn, auto sm) {
         constexpr int N = decltype(sn)::value, M = decltype(sm)::value;
@@ -147,8 +147,55 @@ InnovationShape innovation_shape(const Gaussian& predicted, const StateLayout& l
     out.S.noalias() = out.H * cross;
     out.S += out.R;
   }
+  return true;
+}
+
+template <int M>
+double log_det_fixed(const MeasMat& S) noexcept {
+  const Eigen::LLT<Eigen::Matrix<double, M, M>> llt(S);
+  if (llt.info() != Eigen::Success) return std::numeric_limits<double>::quiet_NaN();
+  return 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+}
+
+}  // namespace
+
+InnovationShape innovation_shape(const Gaussian& predicted, const StateLayout& layout,
+                                 const MeasurementModel& model) noexcept {
+  InnovationShape shape;
+  Innovation& out = shape.shared;
+  GainMat cross;  // P H'
+  if (!innovation_covariance(predicted, layout, model, out, cross)) {
+    filter_detail::fail_innovation(out);
+    return shape;
+  }
+  shape.expected = model.measure(layout, predicted.mean);
   filter_detail::factorise(cross, shape);
   return shape;
+}
+
+double innovation_log_det(const Gaussian& predicted, const StateLayout& layout,
+                          const MeasurementModel& model) noexcept {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  Innovation out;
+  GainMat cross;
+  if (!innovation_covariance(predicted, layout, model, out, cross) || !out.S.allFinite() ||
+      !cross.allFinite()) {
+    return kNaN;
+  }
+  // Factored as factorise() factors S, so that log det S is the same number.
+  switch (out.S.rows()) {
+    case 2:
+      return log_det_fixed<2>(out.S);
+    case 3:
+      return log_det_fixed<3>(out.S);
+    case 4:
+      return log_det_fixed<4>(out.S);
+    default:
+      break;
+  }
+  const Eigen::LLT<MeasMat> llt(out.S);
+  if (llt.info() != Eigen::Success) return kNaN;
+  return 2.0 * llt.matrixLLT().diagonal().array().log().sum();
 }
 
 Innovation innovate(const InnovationShape& shape, const PlotMeasurement& measurement) noexcept {

@@ -202,17 +202,17 @@ void BranchLayer::narrow(int t, ImmEstimate& predicted, std::span<const int> nei
   // In a clutter area: a plot round it in dense clutter (without last_motion_false_plots
   // every track is, from the start of the look). The gate's size is the innovation
   // covariance's, which depends on a plot only through its measurement model: one
-  // innovation serves the neighbours that share the model.
+  // covariance serves the neighbours that share the model.
   const MeasurementModel* model = nullptr;
-  std::optional<Innovation> in;
+  double log_det = 0.0;
   for (std::size_t k = 0; held && clutter_area == 0 && k < neighbours.size(); ++k) {
     const int j = neighbours[k];
     const PlotMeasurement& plot = pre().plots()[j];
     if (model == nullptr || !same_innovation_shape(*model, plot.model)) {
-      in = innovate(narrowed_.modes.front(), filter().layout(), plot, profile_.measurement);
+      log_det = last_motion_log_det(plot);
       model = &plot.model;
     }
-    if (in->ok && in_dense_clutter(*in, j)) clutter_area = 1;
+    if (std::isfinite(log_det) && in_dense_clutter(log_det, j)) clutter_area = 1;
   }
   if (narrowed && clutter_area != 0) {
     // In a clutter area its non-manoeuvre association is the motion unchanged (§2.1): it

@@ -3,6 +3,8 @@
 // last motion's gate expects false plots (a clutter area); its sons follow a turn.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <optional>
 
 #include "point_look.hpp"
@@ -27,11 +29,24 @@ void BranchLayer::hold_last_motion(PointTrack& track) const {
   track.estimate = *coast;
 }
 
-bool BranchLayer::in_dense_clutter(const Innovation& last_motion, int plot) const {
+double BranchLayer::last_motion_log_det(const PlotMeasurement& plot) const {
+  const Gaussian& motion = narrowed_.modes.front();
+  if (profile_.measurement.update != config::MeasurementUpdate::kUnscented) {
+    return innovation_log_det(motion, filter().layout(), plot.model);
+  }
+  // The unscented S from its log-likelihood: log N(nu; 0, S) = -(m log 2 pi + log|S| + NIS) / 2.
+  const Innovation in = innovate(motion, filter().layout(), plot, profile_.measurement);
+  if (!in.ok) return std::numeric_limits<double>::quiet_NaN();
+  const double m = static_cast<double>(plot.model.size());
+  return -2.0 * in.log_likelihood - in.nis - m * std::log(2.0 * std::numbers::pi);
+}
+
+bool BranchLayer::in_dense_clutter(double log_det, int plot) const {
   // Gate volume c_d g^(d/2) sqrt|S| = gate_volume_per_peak_ / N(0; 0, S), the peak density
-  // from log N(nu; 0, S) and the NIS (c_d = pi^(d/2) / Gamma(d/2 + 1)).
-  const double volume = gater().volume_per_peak(pre().plots()[plot].model.size()) *
-                        std::exp(-last_motion.log_likelihood - 0.5 * last_motion.nis);
+  // (c_d = pi^(d/2) / Gamma(d/2 + 1)).
+  const int m = pre().plots()[plot].model.size();
+  const double volume =
+      gater().volume_per_peak(m) * std::exp(0.5 * (m * std::log(2.0 * std::numbers::pi) + log_det));
   return pre().density(pre().plots()[plot], plot) * volume >=
          profile_.point.branching.last_motion_false_plots;
 }

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include <gtest/gtest.h>
+#include <Eigen/LU>
 
 #include "filter_test_support.hpp"
 #include "skytrack/motion/motion_model.hpp"
@@ -162,6 +163,37 @@ TEST(Innovation, FailedFactorisationIsReportedNotThrown) {
   // AND a measurement built for another tracker dimension is refused
   const Gaussian g3 = test::gaussian({1, 2, 3, 4, 5, 6}, StateMat::Identity(6, 6));
   EXPECT_FALSE(innovate(g3, test::layout_3d(), test::cartesian_xy(1, 3, 1.0), kEkf).ok);
+}
+
+TEST(Innovation, LogDetIsTheShapesToTheBitAndNanWithoutAFactor) {
+  // GIVEN predictions of a 2-D track seen by a polar and a Cartesian plot, and of a 3-D track
+  const StateLayout layout = test::layout_2d();
+  StateMat P = StateMat::Zero(4, 4);
+  P.diagonal() << 400, 100, 900, 64;
+  P(0, 2) = P(2, 0) = 120;
+  const Gaussian predicted = test::gaussian({30000, 100, 40000, -50}, P);
+  const Gaussian g3 = test::gaussian({1000, 2, 3000, 4, 500, 1}, StateMat::Identity(6, 6) * 50.0);
+  const PlotMeasurement polar = test::polar_2d(50030.0, 0.64, 15.0, 0.001);
+  const PlotMeasurement cartesian = test::cartesian_xy(30010.0, 39990.0, 20.0);
+  MeasVec sigma3(3);
+  sigma3 << 10.0, 10.0, 30.0;
+  const MeasurementModel cartesian_3d = MeasurementModel::cartesian(3, 3, sigma3);
+  // WHEN log det S is formed alone; THEN it is the innovation shape's, to the bit
+  for (const PlotMeasurement* plot : {&polar, &cartesian}) {
+    const InnovationShape shape = innovation_shape(predicted, layout, plot->model);
+    ASSERT_TRUE(shape.shared.ok);
+    EXPECT_EQ(innovation_log_det(predicted, layout, plot->model), shape.log_det);
+    // AND it is log det S of the innovation
+    EXPECT_NEAR(innovation_log_det(predicted, layout, plot->model),
+                std::log(innovate(predicted, layout, *plot, kEkf).S.determinant()), 1e-9);
+  }
+  EXPECT_EQ(innovation_log_det(g3, test::layout_3d(), cartesian_3d),
+            innovation_shape(g3, test::layout_3d(), cartesian_3d).log_det);
+  // AND S = 0 (no factor) or a model of another dimension gives NaN
+  const Gaussian certain = test::gaussian({1, 2, 3, 4}, StateMat::Zero(4, 4));
+  EXPECT_TRUE(
+      std::isnan(innovation_log_det(certain, layout, test::cartesian_xy(1.5, 3.5, 0.0).model)));
+  EXPECT_TRUE(std::isnan(innovation_log_det(g3, test::layout_3d(), cartesian.model)));
 }
 
 }  // namespace

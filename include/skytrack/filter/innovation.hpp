@@ -54,6 +54,12 @@ struct InnovationShape {
 InnovationShape innovation_shape(const Gaussian& predicted, const StateLayout& layout,
                                  const MeasurementModel& model) noexcept;
 
+/// log det S of the EKF innovation's covariance S = H P H' + R for plots of `model` (S as
+/// innovation_shape makes it), without the gain: what a gate's volume needs. NaN when S is
+/// not positive definite.
+double innovation_log_det(const Gaussian& predicted, const StateLayout& layout,
+                          const MeasurementModel& model) noexcept;
+
 /// innovate() by EKF for a plot of the model `shape` was made for: the same numbers.
 Innovation innovate(const InnovationShape& shape, const PlotMeasurement& measurement) noexcept;
 

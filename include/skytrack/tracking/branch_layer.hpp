@@ -171,9 +171,13 @@ class BranchLayer final : public BranchHooks {
   /// detection (it holds its last motion since a miss), not from its estimate.
   bool starts_from_coast(const PointTrack& track) const;
   bool holds_last_motion() const { return profile_.point.branching.coast_on_last_motion; }
-  /// branching.last_motion_false_plots: a father's last motion's gate, of which `last_motion`
-  /// is the test at plot `plot`, expects at least that many false plots there.
-  bool in_dense_clutter(const Innovation& last_motion, int plot) const;
+  /// log det S of the innovation of the last motion in narrowed_ for plots of `plot`'s model
+  /// (NaN when there is none).
+  double last_motion_log_det(const PlotMeasurement& plot) const;
+  /// branching.last_motion_false_plots: a father's last motion's gate, whose innovation
+  /// covariance has log det S = `log_det` at plot `plot`, expects at least that many false
+  /// plots there.
+  bool in_dense_clutter(double log_det, int plot) const;
   /// A missing father's estimate becomes its last motion's prediction; `coasted` keeps what
   /// its IMM would have coasted to.
   void hold_last_motion(PointTrack& track) const;
