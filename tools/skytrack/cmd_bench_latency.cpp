@@ -1,7 +1,8 @@
 // `skytrack bench-latency`: the daemon's end-to-end latency. Publishes PlotBatch samples of N
 // moving targets (Cartesian plots, no clutter, seeded noise) one at a time and times each until
-// the TrackBatch of the same scan arrives (ping-pong, like ddsperf's round trip), then prints
-// p50/p99/max over the scans after the warm-up. A benchmark tool, not a test:
+// the TrackBatch of the same scan arrives (ping-pong, like ddsperf's round trip; each scan
+// sent when the last is answered, or one every --period-ms as a radar sends them), then
+// prints p50/p99/max over the scans after the warm-up. A benchmark tool, not a test:
 // tools/experiments/daemon-latency.sh runs it next to ddsperf for the floor. With
 // --write-plots it writes the same scans as a plot stream instead, for `skytrack track`.
 #include <algorithm>
