@@ -41,7 +41,7 @@ for targets in 10 100 1000; do
   "$skytrack" bench-latency --targets "$targets" --scans "$n" --write-plots "$work/load.plots.jsonl"
   "$skytrack" track --profile "$root/config/profiles/default.yaml" \
     --plots "$work/load.plots.jsonl" --out /dev/null --quiet 2>&1 |
-    sed -nE 's/.*per batch: mean ([^,]*), p50 ([^,]*), p99 ([^,]*),.*/    the same scans offline (skytrack track, warm-up included): per batch p50 \2, p99 \3, mean \1/p'
+    sed -nE 's/.*per batch: mean ([^,]*), p50 ([^,]*), p99 ([^,]*),.*/    the same scans offline, back to back (skytrack track, warm-up included): per batch p50 \2, p99 \3, mean \1/p'
   size=$(echo "$line" | sed -E 's/.*payload ~ *([0-9]+) B.*/\1/')
   ddsperf -D 7 -i $domain pong waitset >"$work/pong.log" 2>&1 &
   pids=($!)
