@@ -25,6 +25,12 @@ void fail_innovation(Innovation& out) noexcept {
 
 namespace {
 
+/// log det S from S's Cholesky factor.
+template <class Factor>
+double log_det_of(const Factor& llt) noexcept {
+  return 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+}
+
 /// The gain K = cross S^-1 and log det S from S's factor at its compile-time size M (S^-1 in
 /// closed form when the state size is a common one: a runtime-size solve costs several
 /// times more).
@@ -45,7 +51,7 @@ void factorise_fixed(const GainMat& cross, InnovationShape& shape) noexcept {
       })) {
     out.gain = llt.solve(cross.transpose()).transpose();
   }
-  shape.log_det = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+  shape.log_det = log_det_of(llt);
   out.ok = out.gain.allFinite();
   if (!out.ok) fail_innovation(out);
 }
@@ -74,7 +80,7 @@ void factorise(const GainMat& cross, InnovationShape& shape) noexcept {
     return;
   }
   out.gain = llt.solve(cross.transpose()).transpose();  // K = cross S^-1, S symmetric
-  shape.log_det = 2.0 * llt.matrixLLT().diagonal().array().log().sum();
+  shape.log_det = log_det_of(llt);
   out.ok = out.gain.allFinite();
   if (!out.ok) fail_innovation(out);
 }
@@ -150,13 +156,6 @@ bool innovation_covariance(const Gaussian& predicted, const StateLayout& layout,
   return true;
 }
 
-template <int M>
-double log_det_fixed(const MeasMat& S) noexcept {
-  const Eigen::LLT<Eigen::Matrix<double, M, M>> llt(S);
-  if (llt.info() != Eigen::Success) return std::numeric_limits<double>::quiet_NaN();
-  return 2.0 * llt.matrixLLT().diagonal().array().log().sum();
-}
-
 }  // namespace
 
 InnovationShape innovation_shape(const Gaussian& predicted, const StateLayout& layout,
@@ -183,19 +182,19 @@ double innovation_log_det(const Gaussian& predicted, const StateLayout& layout,
     return kNaN;
   }
   // Factored as factorise() factors S, so that log det S is the same number.
+  const auto log_det = [&](const auto& llt) {
+    return llt.info() == Eigen::Success ? filter_detail::log_det_of(llt) : kNaN;
+  };
   switch (out.S.rows()) {
     case 2:
-      return log_det_fixed<2>(out.S);
+      return log_det(Eigen::LLT<Eigen::Matrix2d>(out.S));
     case 3:
-      return log_det_fixed<3>(out.S);
+      return log_det(Eigen::LLT<Eigen::Matrix3d>(out.S));
     case 4:
-      return log_det_fixed<4>(out.S);
+      return log_det(Eigen::LLT<Eigen::Matrix4d>(out.S));
     default:
-      break;
+      return log_det(Eigen::LLT<MeasMat>(out.S));
   }
-  const Eigen::LLT<MeasMat> llt(out.S);
-  if (llt.info() != Eigen::Success) return kNaN;
-  return 2.0 * llt.matrixLLT().diagonal().array().log().sum();
 }
 
 Innovation innovate(const InnovationShape& shape, const PlotMeasurement& measurement) noexcept {
